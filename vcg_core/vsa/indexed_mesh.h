@@ -1,0 +1,231 @@
+// Variational Shape Approximation for vcglib — flat-array snapshot of a triangle mesh.
+// SPDX-License-Identifier: GPL-3.0-or-later
+#ifndef VSA_INDEXED_MESH_H
+#define VSA_INDEXED_MESH_H
+
+#include <vcg/complex/complex.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <numeric>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace vcg {
+namespace tri {
+namespace vsa {
+
+/// A triangle mesh as flat arrays. Every stage of the pipeline indexes these by face and
+/// vertex number, so the hot loops never chase vcg pointers or per-face attributes.
+/// Only live faces and the live vertices they reference are kept, in container order.
+struct IndexedMesh
+{
+    std::vector<Point3d> positions;
+    std::vector<std::array<int, 3>> faces;  ///< vertex indices, in the input's orientation
+    /// neighbors[f][i] is the face across edge (faces[f][i], faces[f][(i+1)%3]), or -1 when
+    /// that edge is on the border or is shared by more than two faces: a non-manifold edge
+    /// cuts the surface, so regions never grow across it.
+    std::vector<std::array<int, 3>> neighbors;
+    std::vector<int> component;  ///< per face: connected component through `neighbors`
+    int componentCount = 0;
+    std::vector<size_t> sourceFace;    ///< face f is m.face[sourceFace[f]]
+    std::vector<size_t> sourceVertex;  ///< vertex v is m.vert[sourceVertex[v]]
+
+    int FaceCount() const { return int(faces.size()); }
+    int VertexCount() const { return int(positions.size()); }
+};
+
+/// What is wrong or unusual in an input mesh; each stage decides what it can accept.
+struct MeshDiagnostics
+{
+    int faces = 0;
+    int vertices = 0;
+    int nonFiniteVertices = 0;     ///< NaN or infinite coordinates
+    int degenerateFaces = 0;       ///< repeated vertex or (relatively) zero area
+    int nonManifoldEdges = 0;      ///< edges shared by more than two faces
+    int nonManifoldVertices = 0;   ///< vertices whose incident faces form several fans
+    int inconsistentEdges = 0;     ///< manifold edges walked the same way by both faces
+    int borderEdges = 0;
+    int unreferencedVertices = 0;  ///< live vertices that no live face uses (ignored)
+    int components = 0;
+
+    bool IsEdgeManifold() const { return nonManifoldEdges == 0; }
+    bool IsTwoManifold() const { return nonManifoldEdges == 0 && nonManifoldVertices == 0; }
+    bool IsOriented() const { return inconsistentEdges == 0; }
+
+    std::string Summary() const
+    {
+        std::ostringstream s;
+        s << faces << " faces, " << vertices << " vertices, " << components << " component(s)";
+        if (borderEdges) s << ", " << borderEdges << " border edges";
+        if (nonManifoldEdges) s << ", " << nonManifoldEdges << " non-manifold edges";
+        if (nonManifoldVertices) s << ", " << nonManifoldVertices << " non-manifold vertices";
+        if (inconsistentEdges) s << ", " << inconsistentEdges << " inconsistently oriented edges";
+        if (degenerateFaces) s << ", " << degenerateFaces << " degenerate faces";
+        if (nonFiniteVertices) s << ", " << nonFiniteVertices << " vertices with NaN/inf coordinates";
+        if (unreferencedVertices) s << ", " << unreferencedVertices << " unreferenced vertices (ignored)";
+        return s.str();
+    }
+};
+
+namespace detail {
+
+inline int FindRoot(std::vector<int> &parent, int x)
+{
+    while (parent[x] != x) {
+        parent[x] = parent[parent[x]];
+        x = parent[x];
+    }
+    return x;
+}
+
+inline void Unite(std::vector<int> &parent, int a, int b)
+{
+    a = FindRoot(parent, a);
+    b = FindRoot(parent, b);
+    if (a != b) parent[std::max(a, b)] = std::min(a, b);  // smallest root: deterministic
+}
+
+/// Pairs up the edges of the faces: fills `neighbors` and counts border, non-manifold and
+/// inconsistently oriented edges. Works on vertex indices only.
+inline void LinkFaces(IndexedMesh &im, MeshDiagnostics &diag)
+{
+    const int faceCount = im.FaceCount();
+    struct HalfEdge { uint64_t key; int faceEdge; };
+    std::vector<HalfEdge> edges;
+    edges.reserve(size_t(faceCount) * 3);
+    for (int f = 0; f < faceCount; ++f)
+        for (int i = 0; i < 3; ++i) {
+            uint64_t a = uint32_t(im.faces[f][i]), b = uint32_t(im.faces[f][(i + 1) % 3]);
+            if (a == b) continue;  // an edge of a degenerate face joins nothing
+            edges.push_back({(std::min(a, b) << 32) | std::max(a, b), 3 * f + i});
+        }
+    std::sort(edges.begin(), edges.end(), [](const HalfEdge &x, const HalfEdge &y) {
+        return x.key != y.key ? x.key < y.key : x.faceEdge < y.faceEdge;
+    });
+    im.neighbors.assign(faceCount, {-1, -1, -1});
+    for (size_t lo = 0; lo < edges.size();) {
+        size_t hi = lo + 1;
+        while (hi < edges.size() && edges[hi].key == edges[lo].key) ++hi;
+        if (hi - lo == 1) {
+            ++diag.borderEdges;
+        } else if (hi - lo == 2) {
+            const int fa = edges[lo].faceEdge / 3, ia = edges[lo].faceEdge % 3;
+            const int fb = edges[lo + 1].faceEdge / 3, ib = edges[lo + 1].faceEdge % 3;
+            im.neighbors[fa][ia] = fb;
+            im.neighbors[fb][ib] = fa;
+            if (im.faces[fa][ia] == im.faces[fb][ib]) ++diag.inconsistentEdges;
+        } else {
+            ++diag.nonManifoldEdges;
+        }
+        lo = hi;
+    }
+}
+
+/// A vertex is manifold when the faces around it form one fan through manifold edges.
+inline int CountNonManifoldVertices(const IndexedMesh &im)
+{
+    const int faceCount = im.FaceCount();
+    std::vector<int> cornerParent(size_t(faceCount) * 3);
+    std::iota(cornerParent.begin(), cornerParent.end(), 0);
+    for (int f = 0; f < faceCount; ++f)
+        for (int i = 0; i < 3; ++i) {
+            const int g = im.neighbors[f][i];
+            if (g < f) continue;  // each manifold edge once (and skip -1)
+            const int a = im.faces[f][i], b = im.faces[f][(i + 1) % 3];
+            for (int j = 0; j < 3; ++j) {
+                if (im.faces[g][j] == a) Unite(cornerParent, 3 * f + i, 3 * g + j);
+                if (im.faces[g][j] == b) Unite(cornerParent, 3 * f + (i + 1) % 3, 3 * g + j);
+            }
+        }
+    // Count fans per vertex: a fan is a root corner; a vertex with two roots is non-manifold.
+    std::vector<int> fans(im.positions.size(), 0);
+    for (int c = 0; c < 3 * faceCount; ++c)
+        if (FindRoot(cornerParent, c) == c) ++fans[im.faces[c / 3][c % 3]];
+    return int(std::count_if(fans.begin(), fans.end(), [](int n) { return n > 1; }));
+}
+
+inline void LabelComponents(IndexedMesh &im)
+{
+    const int faceCount = im.FaceCount();
+    im.component.assign(faceCount, -1);
+    im.componentCount = 0;
+    std::vector<int> stack;
+    for (int start = 0; start < faceCount; ++start) {
+        if (im.component[start] >= 0) continue;
+        im.component[start] = im.componentCount;
+        stack.push_back(start);
+        while (!stack.empty()) {
+            const int f = stack.back();
+            stack.pop_back();
+            for (int g : im.neighbors[f])
+                if (g >= 0 && im.component[g] < 0) {
+                    im.component[g] = im.componentCount;
+                    stack.push_back(g);
+                }
+        }
+        ++im.componentCount;
+    }
+}
+
+}  // namespace detail
+
+/// Builds the flat snapshot of `m` and reports what is unusual about it. Deleted faces and
+/// vertices, and vertices no face uses, are left out; nothing in `m` is changed.
+template <class MeshType>
+IndexedMesh BuildIndexedMesh(const MeshType &m, MeshDiagnostics *diagnostics = nullptr)
+{
+    IndexedMesh im;
+    MeshDiagnostics diag;
+    std::vector<int> vertexIndex(m.vert.size(), -1);
+    for (size_t fi = 0; fi < m.face.size(); ++fi) {
+        const auto &face = m.face[fi];
+        if (face.IsD()) continue;
+        std::array<int, 3> tri;
+        for (int k = 0; k < 3; ++k) {
+            const size_t vi = size_t(face.cV(k) - &m.vert[0]);
+            if (vertexIndex[vi] < 0) {
+                vertexIndex[vi] = int(im.positions.size());
+                im.positions.push_back(Point3d::Construct(m.vert[vi].cP()));
+                im.sourceVertex.push_back(vi);
+            }
+            tri[k] = vertexIndex[vi];
+        }
+        im.faces.push_back(tri);
+        im.sourceFace.push_back(fi);
+    }
+    for (size_t vi = 0; vi < m.vert.size(); ++vi)
+        if (!m.vert[vi].IsD() && vertexIndex[vi] < 0) ++diag.unreferencedVertices;
+
+    Box3d box;
+    for (const Point3d &p : im.positions) {
+        if (std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2])) box.Add(p);
+        else ++diag.nonFiniteVertices;
+    }
+    // Relative to the model's size, so that a millimetre and a kilometre model agree.
+    const double tinyArea = 1e-14 * box.SquaredDiag();
+    for (const auto &t : im.faces) {
+        const double doubleArea =
+            ((im.positions[t[1]] - im.positions[t[0]]) ^ (im.positions[t[2]] - im.positions[t[0]])).Norm();
+        if (t[0] == t[1] || t[1] == t[2] || t[2] == t[0] || !(doubleArea > 2 * tinyArea))
+            ++diag.degenerateFaces;
+    }
+
+    detail::LinkFaces(im, diag);
+    diag.nonManifoldVertices = detail::CountNonManifoldVertices(im);
+    detail::LabelComponents(im);
+    diag.faces = im.FaceCount();
+    diag.vertices = im.VertexCount();
+    diag.components = im.componentCount;
+    if (diagnostics) *diagnostics = diag;
+    return im;
+}
+
+}  // namespace vsa
+}  // namespace tri
+}  // namespace vcg
+
+#endif  // VSA_INDEXED_MESH_H
