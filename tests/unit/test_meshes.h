@@ -86,6 +86,97 @@ inline bool LoadMesh(TMesh &m, const std::string &path, std::string *error = nul
     return true;
 }
 
+// ---- Meshing-stage builders (appended by the meshing work) ----
+
+/// A torus around the z axis, major radius R, tube radius r, nu x nv quads split in two,
+/// outward oriented. Genus 1: V - E + F = 0.
+inline void MakeTorus(TMesh &m, float R, float r, int nu, int nv)
+{
+    std::vector<vcg::Point3f> coords;
+    std::vector<vcg::Point3i> tris;
+    for (int i = 0; i < nu; ++i)
+        for (int j = 0; j < nv; ++j) {
+            const double u = 2 * M_PI * i / nu, v = 2 * M_PI * j / nv;
+            coords.emplace_back(float((R + r * std::cos(v)) * std::cos(u)), float((R + r * std::cos(v)) * std::sin(u)),
+                                float(r * std::sin(v)));
+        }
+    auto at = [&](int i, int j) { return (i % nu) * nv + (j % nv); };
+    for (int i = 0; i < nu; ++i)
+        for (int j = 0; j < nv; ++j) {
+            tris.emplace_back(at(i, j), at(i + 1, j), at(i + 1, j + 1));
+            tris.emplace_back(at(i, j), at(i + 1, j + 1), at(i, j + 1));
+        }
+    BuildFromLists(m, coords, tris);
+}
+
+/// The upper unit hemisphere (z >= 0), a pole and `rings` rings of `sectors` vertices, the
+/// last ring on the equator as its open border; outward oriented. A disc: V - E + F = 1.
+/// With `flat`, the same connectivity laid flat on the unit disc of the plane z = 0.
+inline void MakeHemisphere(TMesh &m, int rings, int sectors, bool flat = false)
+{
+    std::vector<vcg::Point3f> coords = {vcg::Point3f(0, 0, flat ? 0.f : 1.f)};
+    std::vector<vcg::Point3i> tris;
+    for (int k = 1; k <= rings; ++k)
+        for (int s = 0; s < sectors; ++s) {
+            const double theta = 0.5 * M_PI * k / rings, phi = 2 * M_PI * s / sectors;
+            const double radius = flat ? double(k) / rings : std::sin(theta);
+            coords.emplace_back(float(radius * std::cos(phi)), float(radius * std::sin(phi)),
+                                flat ? 0.f : float(std::cos(theta)));
+        }
+    auto at = [&](int k, int s) { return k == 0 ? 0 : 1 + (k - 1) * sectors + (s % sectors); };
+    for (int s = 0; s < sectors; ++s) tris.emplace_back(at(0, s), at(1, s), at(1, s + 1));
+    for (int k = 1; k < rings; ++k)
+        for (int s = 0; s < sectors; ++s) {
+            tris.emplace_back(at(k, s), at(k + 1, s), at(k + 1, s + 1));
+            tris.emplace_back(at(k, s), at(k + 1, s + 1), at(k, s + 1));
+        }
+    BuildFromLists(m, coords, tris);
+}
+
+/// The box [-1,1]^2 x [-h,h] with a cylindrical hole of radius r along z, outward oriented.
+/// Each of the four faces it is made of (top, bottom, outer wall, hole wall) is a ring of
+/// `segments` quads (a multiple of 8, so the box corners are vertices). Genus 1.
+inline void MakeBoxWithHole(TMesh &m, int segments, float h = 0.5f, float r = 0.5f)
+{
+    std::vector<vcg::Point3f> coords;
+    std::vector<vcg::Point3i> tris;
+    for (int s = 0; s < segments; ++s) {
+        const double phi = 2 * M_PI * s / segments, c = std::cos(phi), d = std::sin(phi);
+        const double square = 1.0 / std::max(std::abs(c), std::abs(d));
+        for (float z : {-h, h}) coords.emplace_back(float(c * square), float(d * square), z);  // 4s, 4s+1
+        for (float z : {-h, h}) coords.emplace_back(float(r * c), float(r * d), z);            // 4s+2, 4s+3
+    }
+    auto outer = [&](int s, int top) { return 4 * (s % segments) + top; };
+    auto hole = [&](int s, int top) { return 4 * (s % segments) + 2 + top; };
+    for (int s = 0; s < segments; ++s) {
+        tris.emplace_back(outer(s, 1), outer(s + 1, 1), hole(s + 1, 1));  // top, +z
+        tris.emplace_back(outer(s, 1), hole(s + 1, 1), hole(s, 1));
+        tris.emplace_back(outer(s, 0), hole(s + 1, 0), outer(s + 1, 0));  // bottom, -z
+        tris.emplace_back(outer(s, 0), hole(s, 0), hole(s + 1, 0));
+        tris.emplace_back(outer(s, 0), outer(s + 1, 0), outer(s + 1, 1));  // outer wall
+        tris.emplace_back(outer(s, 0), outer(s + 1, 1), outer(s, 1));
+        tris.emplace_back(hole(s, 0), hole(s + 1, 1), hole(s + 1, 0));  // hole wall, facing the axis
+        tris.emplace_back(hole(s, 0), hole(s, 1), hole(s + 1, 1));
+    }
+    BuildFromLists(m, coords, tris);
+}
+
+/// The square [-1,1]^2 in the plane z = 0 as an n x n grid of quads split in two, facing +z.
+inline void MakeFlatSquare(TMesh &m, int n)
+{
+    std::vector<vcg::Point3f> coords;
+    std::vector<vcg::Point3i> tris;
+    for (int j = 0; j <= n; ++j)
+        for (int i = 0; i <= n; ++i) coords.emplace_back(-1.f + 2.f * i / n, -1.f + 2.f * j / n, 0.f);
+    auto at = [&](int i, int j) { return j * (n + 1) + i; };
+    for (int j = 0; j < n; ++j)
+        for (int i = 0; i < n; ++i) {
+            tris.emplace_back(at(i, j), at(i + 1, j), at(i + 1, j + 1));
+            tris.emplace_back(at(i, j), at(i + 1, j + 1), at(i, j + 1));
+        }
+    BuildFromLists(m, coords, tris);
+}
+
 }  // namespace vsa_test
 
 #endif  // VSA_TEST_MESHES_H

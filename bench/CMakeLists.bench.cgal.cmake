@@ -1,0 +1,23 @@
+# Peers to compare against: CGAL's VSA (cgal-vsa-bench) and a measuring tool for any
+# simplified mesh, e.g. MeshLab's Quadric Edge Collapse output (mesh-distance).
+# Both measure with bench/surface_distance.h and vcg_core's mesh_validity.h.
+
+add_executable(mesh-distance ${CMAKE_CURRENT_LIST_DIR}/mesh_distance.cpp)
+target_link_libraries(mesh-distance PRIVATE vsa::vcg_core)
+target_compile_options(mesh-distance PRIVATE ${VSA_WARNINGS})
+
+# CGAL 5.x is header-only; its CMake config also finds GMP, MPFR and Boost.
+find_package(CGAL QUIET)
+if(CGAL_FOUND)
+  add_executable(cgal-vsa-bench ${CMAKE_CURRENT_LIST_DIR}/cgal_vsa_bench.cpp)
+  target_link_libraries(cgal-vsa-bench PRIVATE vsa::vcg_core CGAL::CGAL)
+  target_compile_options(cgal-vsa-bench PRIVATE ${VSA_WARNINGS})
+  # CGAL's imported target puts its headers on the normal include path; as system headers
+  # its warnings stay out of ours.
+  get_target_property(VSA_CGAL_INCLUDES CGAL::CGAL INTERFACE_INCLUDE_DIRECTORIES)
+  if(VSA_CGAL_INCLUDES)
+    target_include_directories(cgal-vsa-bench SYSTEM PRIVATE ${VSA_CGAL_INCLUDES})
+  endif()
+else()
+  message(STATUS "CGAL not found: cgal-vsa-bench is skipped (install libcgal-dev to build it)")
+endif()

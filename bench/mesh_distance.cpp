@@ -1,0 +1,80 @@
+// mesh-distance: measures any simplified mesh against its input with the same validity and
+// distance code the benchmark drivers use (run_bench.py uses it for MeshLab's decimation).
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+#include "bench_json.h"
+#include "surface_distance.h"
+
+#include <vsa/mesh_validity.h>
+
+#include <wrap/io_trimesh/import_off.h>
+
+#include <iostream>
+#include <string>
+#include <vector>
+
+namespace {
+
+// Double precision, like the other drivers' measurement meshes; files are read without repair.
+class PlainVertex;
+class PlainFace;
+struct PlainUsedTypes
+    : public vcg::UsedTypes<vcg::Use<PlainVertex>::AsVertexType, vcg::Use<PlainFace>::AsFaceType> {};
+class PlainVertex : public vcg::Vertex<PlainUsedTypes, vcg::vertex::Coord3d, vcg::vertex::BitFlags> {};
+class PlainFace : public vcg::Face<PlainUsedTypes, vcg::face::VertexRef, vcg::face::BitFlags> {};
+class PlainMesh : public vcg::tri::TriMesh<std::vector<PlainVertex>, std::vector<PlainFace>> {};
+
+/// OFF only: it is what the drivers and run_bench.py write, and it needs no compiled vcglib
+/// sources (PLY would need wrap/ply/plylib.cpp).
+bool LoadOff(PlainMesh &m, const std::string &path, std::string &error)
+{
+    using Importer = vcg::tri::io::ImporterOFF<PlainMesh>;
+    const int rc = Importer::Open(m, path.c_str());
+    if (rc != Importer::NoError) {
+        error = path + ": " + Importer::ErrorMsg(rc);
+        return false;
+    }
+    return true;
+}
+
+}  // namespace
+
+int main(int argc, char **argv)
+{
+    if (argc != 3) {
+        std::cerr << "usage: mesh-distance INPUT.off SIMPLIFIED.off\n"
+                     "Prints one JSON line: validity of SIMPLIFIED and its symmetric Hausdorff distance\n"
+                     "to INPUT (max, mean, RMS as fractions of INPUT's bounding-box diagonal).\n";
+        return 2;
+    }
+    vsa_bench::JsonLine line;
+    line.Add("input", argv[1]).Add("simplified", argv[2]);
+    PlainMesh input, simplified;
+    std::string error;
+    if (!LoadOff(input, argv[1], error) || !LoadOff(simplified, argv[2], error)) {
+        line.Add("error", error).Print();
+        return 1;
+    }
+    const vsa_bench::Stopwatch stopwatch;
+    const vcg::tri::vsa::MeshValidity inputValidity = vcg::tri::vsa::CheckMeshValidity(input, false);
+    const vcg::tri::vsa::MeshValidity validity = vcg::tri::vsa::CheckMeshValidity(simplified);
+    line.Add("faces", inputValidity.faces)
+        .Add("closed_in", inputValidity.closed)
+        .Add("out_vertices", validity.vertices)
+        .Add("out_faces", validity.faces)
+        .Add("manifold", validity.manifold)
+        .Add("closed", validity.closed)
+        .Add("oriented", validity.oriented)
+        .Add("euler_in", inputValidity.eulerCharacteristic)
+        .Add("euler_out", validity.eulerCharacteristic)
+        .Add("degenerate_faces", validity.degenerateFaces)
+        .Add("duplicate_faces", validity.duplicateFaces)
+        .Add("self_intersections", validity.selfIntersections);
+    const vsa_bench::SurfaceDistance distance = vsa_bench::MeasureSurfaceDistance(input, simplified);
+    if (distance.valid)
+        line.Add("hausdorff_max", distance.max).Add("hausdorff_mean", distance.mean).Add("hausdorff_rms", distance.rms);
+    else
+        line.AddNull("hausdorff_max").AddNull("hausdorff_mean").AddNull("hausdorff_rms");
+    line.Add("t_measure_s", stopwatch.Seconds()).Print();
+    return 0;
+}

@@ -1,0 +1,143 @@
+// vsa-bench: times our VSA partitioning on one mesh and prints one JSON line (bench/README.md).
+//   vsa-bench --mesh FILE --k N --metric l21|l2 --init random|farthest|hierarchical
+//             --iterations N --seed S [--target-error E] [--tolerance T] [--relaxations R]
+//             [--teleport] [--out FILE]
+// The tolerance defaults to 0 so that --iterations Lloyd iterations run (unless the partition
+// cycles), like CGAL's run(N): per-iteration timings compare. --out writes the input with each
+// face coloured by its region (format from the extension: ply, off, obj).
+#include "bench_json.h"
+
+#include <vsa/approximation.h>
+
+#include <vcg/complex/complex.h>
+#include <wrap/io_trimesh/export.h>
+#include <wrap/io_trimesh/import.h>
+
+#include <string>
+
+namespace {
+
+// Float coordinates like MeshLab's CMeshO, with a face colour for --out.
+class BVertex;
+class BFace;
+struct BUsedTypes : public vcg::UsedTypes<vcg::Use<BVertex>::AsVertexType, vcg::Use<BFace>::AsFaceType> {};
+class BVertex : public vcg::Vertex<BUsedTypes, vcg::vertex::Coord3f, vcg::vertex::Normal3f, vcg::vertex::BitFlags> {};
+class BFace : public vcg::Face<BUsedTypes, vcg::face::VertexRef, vcg::face::Normal3f, vcg::face::Color4b,
+                               vcg::face::BitFlags> {};
+class BMesh : public vcg::tri::TriMesh<std::vector<BVertex>, std::vector<BFace>> {};
+
+struct Options
+{
+    std::string mesh, out, metric = "l21", init = "hierarchical";
+    vcg::tri::vsa::ApproximationParam param;
+};
+
+/// Parses the command line into `o`; returns an error message, empty when all is well.
+std::string Parse(int argc, char **argv, Options &o)
+{
+    using namespace vcg::tri::vsa;
+    o.param.tolerance = 0;
+    for (int i = 1; i < argc; ++i) {
+        const std::string arg = argv[i];
+        if (arg == "--teleport") {
+            o.param.teleport = true;
+            continue;
+        }
+        if (i + 1 >= argc) return "missing value after " + arg;
+        const std::string value = argv[++i];
+        try {
+            if (arg == "--mesh") o.mesh = value;
+            else if (arg == "--out") o.out = value;
+            else if (arg == "--k") o.param.proxyCount = std::stoi(value);
+            else if (arg == "--iterations") o.param.maxIterations = std::stoi(value);
+            else if (arg == "--seed") o.param.randomSeed = std::stoull(value);
+            else if (arg == "--target-error") o.param.targetError = std::stod(value);
+            else if (arg == "--tolerance") o.param.tolerance = std::stod(value);
+            else if (arg == "--relaxations") o.param.relaxations = std::stoi(value);
+            else if (arg == "--metric") o.metric = value;
+            else if (arg == "--init") o.init = value;
+            else return "unknown option " + arg;
+        } catch (const std::exception &) {
+            return "bad value '" + value + "' for " + arg;
+        }
+    }
+    if (o.mesh.empty()) return "--mesh FILE is required";
+    if (o.metric == "l21") o.param.metric = MetricKind::L21;
+    else if (o.metric == "l2") o.param.metric = MetricKind::L2;
+    else return "--metric must be l21 or l2";
+    if (o.init == "random") o.param.init = SeedingMethod::Random;
+    else if (o.init == "farthest") o.param.init = SeedingMethod::Farthest;
+    else if (o.init == "hierarchical") o.param.init = SeedingMethod::Hierarchical;
+    else return "--init must be random, farthest or hierarchical";
+    return {};
+}
+
+/// The input with each face coloured by its region.
+bool WriteRegions(BMesh &m, const vcg::tri::vsa::IndexedMesh &im, const vcg::tri::vsa::Partition &p,
+                  const std::string &path)
+{
+    const int regionCount = int(p.proxies.size());
+    for (int f = 0; f < im.FaceCount(); ++f)
+        m.face[im.sourceFace[f]].C() = vcg::Color4b::Scatter(regionCount, p.faceRegion[f]);
+    return vcg::tri::io::Exporter<BMesh>::Save(m, path.c_str(), vcg::tri::io::Mask::IOM_FACECOLOR) == 0;
+}
+
+}  // namespace
+
+int main(int argc, char **argv)
+{
+    using namespace vcg::tri::vsa;
+    Options o;
+    vsa_bench::JsonLine json;
+    json.Add("tool", "vsa");
+    const std::string parseError = Parse(argc, argv, o);
+    if (!parseError.empty()) {
+        json.Add("error", parseError).Print();
+        return 2;
+    }
+    json.Add("mesh", o.mesh);
+
+    BMesh m;
+    int mask = 0;
+    const int rc = vcg::tri::io::Importer<BMesh>::Open(m, o.mesh.c_str(), mask);
+    if (rc != 0 && vcg::tri::io::Importer<BMesh>::ErrorCritical(rc)) {
+        json.Add("error", std::string("cannot read mesh: ") + vcg::tri::io::Importer<BMesh>::ErrorMsg(rc)).Print();
+        return 1;
+    }
+    json.Add("faces", m.fn).Add("k", o.param.proxyCount).Add("metric", o.metric).Add("init", o.init);
+
+    try {
+        vsa_bench::Stopwatch clock;
+        Approximation approximation(m, o.param);
+        const double tSetup = clock.Seconds();
+        clock.Restart();
+        approximation.Initialize();
+        const double tSeed = clock.Seconds();
+        clock.Restart();
+        const int iterations = approximation.Run(o.param.maxIterations);
+        const double tIterations = clock.Seconds();
+        const int faces = approximation.Mesh().FaceCount();
+        json.Add("t_seed_s", tSeed)
+            .Add("t_iterations_s", tIterations)
+            .Add("iterations_run", iterations)
+            .Add("t_total_s", tSetup + tSeed + tIterations)
+            .Add("energy", approximation.Energy())
+            .Add("peak_rss_mb", vsa_bench::PeakRssMb())
+            .Add("seed", o.param.randomSeed)
+            .Add("iterations", o.param.maxIterations)
+            .Add("proxies", approximation.ProxyCount())
+            .Add("t_setup_s", tSetup)
+            .Add("us_per_face_iter", iterations > 0 ? 1e6 * tIterations / (double(faces) * iterations) : 0.0)
+            .Add("reference_energy", approximation.ReferenceEnergy());
+        if (o.param.targetError > 0) json.Add("target_error", o.param.targetError);
+        if (!o.out.empty() && !WriteRegions(m, approximation.Mesh(), approximation.CurrentPartition(), o.out)) {
+            json.Add("error", "cannot write " + o.out).Print();
+            return 1;
+        }
+    } catch (const std::exception &e) {
+        json.Add("error", e.what()).Print();
+        return 1;
+    }
+    json.Print();
+    return 0;
+}

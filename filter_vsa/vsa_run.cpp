@@ -1,0 +1,142 @@
+#include "vsa_run.h"
+
+#if !defined(VSA_MESHLAB_FILTERPLUGIN_API)
+#error "VSA_MESHLAB_FILTERPLUGIN_API must be defined by the build: 0 for MeshLab 2020.09, 1 for FilterPlugin"
+#elif VSA_MESHLAB_FILTERPLUGIN_API
+#include <common/ml_document/cmesh.h>
+#else
+#include <common/ml_mesh_type.h>
+#endif
+
+#include <vcg/complex/allocate.h>
+
+#include <QFileInfo>
+
+#include <exception>
+#include <new>
+
+namespace vsa = vcg::tri::vsa;
+
+namespace {
+
+const char *MetricName(vsa::MetricKind metric) { return metric == vsa::MetricKind::L21 ? "L2,1" : "L2"; }
+
+const char *InitName(vsa::SeedingMethod init)
+{
+    switch (init) {
+    case vsa::SeedingMethod::Random: return "random";
+    case vsa::SeedingMethod::Farthest: return "farthest";
+    case vsa::SeedingMethod::Hierarchical: return "hierarchical";
+    }
+    return "?";
+}
+
+vcg::Color4b RegionColor(int region, int regionCount)
+{
+    return vcg::Color4b::Scatter(std::max(regionCount, 1), region, 0.4f, 0.9f);
+}
+
+void Describe(const vsa::ShapeApproximationResult &r, const VsaFilterSettings &settings, VsaRunOutcome &outcome)
+{
+    const vsa::ApproximationResult &p = r.partition;
+    const vsa::MeshingReport &m = r.meshing;
+    QStringList &log = outcome.log;
+    log << QString("VSA: input: %1").arg(QString::fromStdString(r.input.Summary()));
+    for (const std::string &message : p.messages) log << QString("VSA: %1").arg(QString::fromStdString(message));
+    log << QString("VSA: k=%1 proxies, %2 metric, %3 seeding, %4 Lloyd iterations, distortion %5 (%6 of one proxy per component)")
+               .arg(p.proxyCount)
+               .arg(MetricName(settings.core.partition.metric))
+               .arg(InitName(settings.core.partition.init))
+               .arg(p.iterations)
+               .arg(p.energy, 0, 'g', 6)
+               .arg(p.referenceEnergy > 0 ? p.energy / p.referenceEnergy : 0.0, 0, 'g', 4);
+    log << QString("VSA: faces in %1 -> faces out %2 (%3 vertices, %4 anchors)")
+               .arg(r.input.faces)
+               .arg(m.validity.faces)
+               .arg(m.validity.vertices)
+               .arg(m.anchors);
+    log << QString("VSA: regions meshed by flooding %1, by ear-clipping fallback %2, with an extra vertex %3, cut into discs %4")
+               .arg(m.regionsByFlooding)
+               .arg(m.regionsByEarClipping)
+               .arg(m.regionsWithSteinerVertex)
+               .arg(m.regionsCut);
+    log << QString("VSA: output: %1").arg(QString::fromStdString(m.validity.Summary()));
+    log << QString("VSA: time: seeding %1 s, iterations %2 s, meshing %3 s, total %4 s")
+               .arg(r.secondsSeeding, 0, 'f', 3)
+               .arg(r.secondsIterations, 0, 'f', 3)
+               .arg(r.secondsMeshing, 0, 'f', 3)
+               .arg(r.secondsSeeding + r.secondsIterations + r.secondsMeshing, 0, 'f', 3);
+
+    auto &f = outcome.figures;
+    f["proxy_count"] = p.proxyCount;
+    f["iterations"] = p.iterations;
+    f["energy"] = p.energy;
+    f["faces_in"] = r.input.faces;
+    f["faces_out"] = m.validity.faces;
+    f["vertices_out"] = m.validity.vertices;
+    f["anchors"] = m.anchors;
+    f["regions_fallback"] = m.regionsByEarClipping + m.regionsWithSteinerVertex;
+    f["manifold"] = m.validity.manifold;
+    f["closed"] = m.validity.closed;
+    f["oriented"] = m.validity.oriented;
+    f["seconds_seeding"] = r.secondsSeeding;
+    f["seconds_iterations"] = r.secondsIterations;
+    f["seconds_meshing"] = r.secondsMeshing;
+}
+
+}  // namespace
+
+VsaRunOutcome RunVsa(const CMeshO &input, const VsaFilterSettings &settings, CMeshO &approximation,
+                     CMeshO *anchors, vcg::CallBackPos *cb)
+{
+    VsaRunOutcome outcome;
+    try {
+        approximation.Clear();
+        if (settings.colorizeRegions) approximation.face.EnableColor();
+        const vsa::ShapeApproximationResult r = vsa::ApproximateShape(input, approximation, settings.core, cb);
+        if (!r.ok) {
+            outcome.error = QString::fromStdString(r.error);
+            return outcome;
+        }
+        Describe(r, settings, outcome);
+        outcome.regionCount = r.partition.proxyCount;
+        outcome.faceRegion = r.inputFaceRegion;
+        if (settings.colorizeRegions)
+            for (size_t f = 0; f < approximation.face.size(); ++f)
+                approximation.face[f].C() = RegionColor(r.meshing.faceRegion[f], outcome.regionCount);
+        if (anchors) {
+            anchors->Clear();
+            // Every output vertex that comes from an input vertex is an anchor.
+            for (size_t v = 0; v < approximation.vert.size(); ++v)
+                if (r.meshing.vertexSource[v] >= 0)
+                    vcg::tri::Allocator<CMeshO>::AddVertex(*anchors, approximation.vert[v].cP());
+        }
+        outcome.ok = true;
+    } catch (const std::bad_alloc &) {
+        outcome.error = "Out of memory.";
+    } catch (const std::exception &e) {
+        outcome.error = QString::fromStdString(e.what());
+    } catch (...) {
+        outcome.error = "Unknown error.";
+    }
+    return outcome;
+}
+
+void ColorizeRegions(CMeshO &mesh, const std::vector<int> &faceRegion, int regionCount)
+{
+    for (size_t f = 0; f < mesh.face.size() && f < faceRegion.size(); ++f) {
+        if (faceRegion[f] < 0) continue;
+        mesh.face[f].C() = RegionColor(faceRegion[f], regionCount);
+        mesh.face[f].Q() = CMeshO::ScalarType(faceRegion[f]);
+    }
+}
+
+QString ApproximationLayerName(const QString &inputLabel, int regionCount)
+{
+    return QString("%1 VSA k=%2").arg(QFileInfo(inputLabel).completeBaseName()).arg(regionCount);
+}
+
+QString AnchorLayerName(const QString &inputLabel)
+{
+    return QFileInfo(inputLabel).completeBaseName() + " VSA anchors";
+}

@@ -1,0 +1,8 @@
+#!/usr/bin/env bash
+# Installs what is needed, builds, and runs every test: vcg_core unit tests and the
+# end-to-end tests through the real meshlabserver (and the MeshLab GUI) under Xvfb.
+set -euo pipefail
+root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
+bash "$root/scripts/build.sh"
+cd "$root/build"
+ctest --output-on-failure -j2 "$@"

@@ -1,0 +1,335 @@
+// End-to-end tests: the shipped .mlx scripts and bad inputs through the real meshlabserver
+// 2020.09 with our plugin, checking the files it writes and what it logs.
+#include <vsa/indexed_mesh.h>
+#include <vsa/mesh_validity.h>
+
+#include "../unit/test_meshes.h"
+
+#include <gtest/gtest.h>
+
+#include <sys/wait.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <regex>
+#include <set>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace fs = std::filesystem;
+using vsa_test::TMesh;
+
+namespace {
+
+const std::string kResources = VSA_RESOURCES;
+const std::string kFandisk = kResources + "/meshes/fandisk.off";
+
+struct ServerRun
+{
+    int exitCode = -1;    ///< meshlabserver's exit status; -1 if it did not exit normally
+    std::string output;   ///< everything it printed, log included
+};
+
+std::string Quote(const std::string &s) { return "'" + s + "'"; }
+
+std::string ReadFile(const fs::path &path)
+{
+    std::ifstream in(path);
+    std::stringstream text;
+    text << in.rdbuf();
+    return text.str();
+}
+
+fs::path WorkDir(const std::string &name)
+{
+    const fs::path dir = fs::path(VSA_E2E_WORK) / name;
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    return dir;
+}
+
+/// Runs meshlabserver under its own Xvfb with `arguments` (already quoted where needed).
+ServerRun RunServer(const fs::path &dir, const std::string &arguments)
+{
+    const fs::path output = dir / "meshlabserver.out";
+    const std::string command = std::string(VSA_XVFB_RUN) + " -a " + Quote(VSA_MESHLABSERVER) + " " + arguments +
+                                " > " + Quote(output.string()) + " 2>&1";
+    const int status = std::system(command.c_str());
+    ServerRun run;
+    run.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    run.output = ReadFile(output);
+    return run;
+}
+
+/// The VSA filter's parameters as a script would give them (every one must be present).
+std::map<std::string, std::string> DefaultVsaParameters()
+{
+    return {{"ProxyNum", "50"},         {"TargetError", "0"},     {"Metric", "0"},          {"Init", "1"},
+            {"MaxIterations", "50"},    {"RandomSeed", "1"},      {"Teleport", "false"},    {"AnchorThreshold", "0.2"},
+            {"ProjectAnchors", "true"}, {"Polygonal", "true"},    {"ColorizeRegions", "true"}, {"AnchorLayer", "false"}};
+}
+
+fs::path WriteVsaScript(const fs::path &dir, const std::map<std::string, std::string> &overrides)
+{
+    std::map<std::string, std::string> p = DefaultVsaParameters();
+    for (const auto &[name, value] : overrides) p[name] = value;
+    const fs::path script = dir / "vsa.mlx";
+    std::ofstream out(script);
+    out << "<!DOCTYPE FilterScript>\n<FilterScript>\n <filter name=\"Variational Shape Approximation\">\n"
+        << "  <Param type=\"RichInt\" value=\"" << p["ProxyNum"] << "\" name=\"ProxyNum\"/>\n"
+        << "  <Param type=\"RichFloat\" value=\"" << p["TargetError"] << "\" name=\"TargetError\"/>\n"
+        << "  <Param type=\"RichEnum\" value=\"" << p["Metric"]
+        << "\" name=\"Metric\" enum_cardinality=\"2\" enum_val0=\"L2,1\" enum_val1=\"L2\"/>\n"
+        << "  <Param type=\"RichEnum\" value=\"" << p["Init"]
+        << "\" name=\"Init\" enum_cardinality=\"3\" enum_val0=\"Random\" enum_val1=\"Farthest\" enum_val2=\"Hierarchical\"/>\n";
+    for (const char *name : {"MaxIterations", "RandomSeed"})
+        out << "  <Param type=\"RichInt\" value=\"" << p[name] << "\" name=\"" << name << "\"/>\n";
+    out << "  <Param type=\"RichBool\" value=\"" << p["Teleport"] << "\" name=\"Teleport\"/>\n"
+        << "  <Param type=\"RichFloat\" value=\"" << p["AnchorThreshold"] << "\" name=\"AnchorThreshold\"/>\n";
+    for (const char *name : {"ProjectAnchors", "Polygonal", "ColorizeRegions", "AnchorLayer"})
+        out << "  <Param type=\"RichBool\" value=\"" << p[name] << "\" name=\"" << name << "\"/>\n";
+    out << " </filter>\n</FilterScript>\n";
+    return script;
+}
+
+bool Load(TMesh &m, const fs::path &path)
+{
+    std::string error;
+    const bool ok = vsa_test::LoadMesh(m, path.string(), &error);
+    EXPECT_TRUE(ok) << path << ": " << error;
+    return ok;
+}
+
+std::set<unsigned> DistinctFaceColors(const TMesh &m)
+{
+    std::set<unsigned> colors;
+    for (const auto &f : m.face)
+        if (!f.IsD()) colors.insert(f.cC()[0] | f.cC()[1] << 8 | f.cC()[2] << 16);
+    return colors;
+}
+
+/// Runs `script` on `mesh`, saving the approximation (current layer) and the coloured input.
+struct ScriptCase
+{
+    ServerRun run;
+    fs::path approximation, regions;
+};
+
+ScriptCase RunScript(const fs::path &dir, const fs::path &mesh, const fs::path &script)
+{
+    ScriptCase c;
+    c.approximation = dir / "approximation.ply";
+    c.regions = dir / "regions.ply";
+    c.run = RunServer(dir, "-i " + Quote(mesh.string()) + " -s " + Quote(script.string()) + " -o " +
+                               Quote(c.approximation.string()) + " -m fc -o " + Quote(c.regions.string()) +
+                               " -l 0 -m fc fq");
+    return c;
+}
+
+/// Checks a successful run: a closed input gives a closed, manifold, oriented approximation
+/// with about k faces per region; the input is coloured with exactly one colour per region.
+void ExpectGoodApproximation(const ScriptCase &c, int k, bool inputClosed)
+{
+    ASSERT_EQ(c.run.exitCode, 0) << c.run.output;
+    EXPECT_NE(c.run.output.find("VSA k=" + std::to_string(k)), std::string::npos) << c.run.output;
+    TMesh out, regions;
+    ASSERT_TRUE(Load(out, c.approximation));
+    ASSERT_TRUE(Load(regions, c.regions));
+    const vcg::tri::vsa::MeshValidity validity = vcg::tri::vsa::CheckMeshValidity(out);
+    EXPECT_TRUE(validity.manifold) << validity.Summary();
+    EXPECT_TRUE(validity.oriented) << validity.Summary();
+    EXPECT_EQ(validity.degenerateFaces, 0) << validity.Summary();
+    if (inputClosed) {
+        EXPECT_TRUE(validity.closed) << validity.Summary();
+    }
+    // A region becomes at least one triangle; far fewer faces than the input.
+    EXPECT_GE(out.FN(), k);
+    EXPECT_LT(out.FN(), regions.FN() / 4);
+    // The input layer: one colour per region, quality = region index in [0, k).
+    EXPECT_EQ(DistinctFaceColors(regions).size(), size_t(k));
+    std::set<int> regionIds;
+    for (const auto &f : regions.face) regionIds.insert(int(f.cQ()));
+    EXPECT_EQ(regionIds.size(), size_t(k));
+    EXPECT_EQ(*regionIds.begin(), 0);
+    EXPECT_EQ(*regionIds.rbegin(), k - 1);
+}
+
+}  // namespace
+
+TEST(MeshLabServer, DumpListsTheFilterWithItsParameters)
+{
+    const fs::path dir = WorkDir("dump");
+    const ServerRun run = RunServer(dir, "-d " + Quote((dir / "filters.txt").string()));
+    ASSERT_EQ(run.exitCode, 0) << run.output;
+    const std::string dump = ReadFile(dir / "filters.txt");
+    ASSERT_NE(dump.find("Variational Shape Approximation"), std::string::npos);
+    // The dump shows each parameter by its description.
+    for (const char *description : {"Number of proxies (k)", "Target error", "Metric", "Initialization",
+                                    "Max iterations", "Random seed", "Teleport proxies", "Anchor threshold",
+                                    "Project anchors on proxies", "Polygonal output", "Colorize regions on the input",
+                                    "Add anchor layer"})
+        EXPECT_NE(dump.find(description), std::string::npos) << description;
+    EXPECT_NE(dump.find("Cohen-Steiner"), std::string::npos);
+}
+
+class ShippedScript : public testing::TestWithParam<std::string> {};
+
+TEST_P(ShippedScript, ApproximatesFandisk)
+{
+    const fs::path dir = WorkDir("script_" + GetParam());
+    const ScriptCase c = RunScript(dir, kFandisk, kResources + "/scripts/" + GetParam() + ".mlx");
+    ExpectGoodApproximation(c, 50, true);
+}
+
+INSTANTIATE_TEST_SUITE_P(MeshLabServer, ShippedScript,
+                         testing::Values("vsa_l21_random", "vsa_l21_farthest", "vsa_l21_hierarchical",
+                                         "vsa_l2_random", "vsa_l2_farthest", "vsa_l2_hierarchical"));
+
+TEST(MeshLabServer, HausdorffScriptMeasuresBothWays)
+{
+    const fs::path dir = WorkDir("hausdorff");
+    const ServerRun run = RunServer(dir, "-i " + Quote(kFandisk) + " -s " +
+                                             Quote(kResources + "/scripts/vsa_hausdorff.mlx"));
+    ASSERT_EQ(run.exitCode, 0) << run.output;
+    // MeshLab logs "min : a max b mean : c RMS : d" twice per run: absolute, then over the diagonal.
+    const std::regex line(R"(Values w\.r\.t\. BBox Diag \(([0-9.eE+-]+)\)\s*\n\s*min : ([0-9.eE+-]+)\s+max ([0-9.eE+-]+))");
+    // meshlabserver prints the whole (never cleared) log after each filter: the last two
+    // measurements are the two directions.
+    std::vector<double> maxima;
+    for (auto it = std::sregex_iterator(run.output.begin(), run.output.end(), line); it != std::sregex_iterator(); ++it)
+        maxima.push_back(std::stod((*it)[3]));
+    ASSERT_GE(maxima.size(), 2u) << run.output;
+    maxima.erase(maxima.begin(), maxima.end() - 2);
+    for (double relativeMax : maxima) {
+        EXPECT_GT(relativeMax, 0.0);
+        EXPECT_LT(relativeMax, 0.03);  // 50 planes keep fandisk within 3% of its diagonal
+    }
+}
+
+TEST(MeshLabServer, PolygonalOutputKeepsRegionsAsPolygons)
+{
+    // meshlabserver 2020.09 aborts when asked for polygonal OBJ ("poligonalize" missing), so
+    // the polygons are checked in OFF, which it writes with `-m mp`.
+    const fs::path dir = WorkDir("polygonal");
+    const fs::path off = dir / "approximation.off";
+    const ServerRun run = RunServer(dir, "-i " + Quote(kFandisk) + " -s " +
+                                             Quote(WriteVsaScript(dir, {{"ProxyNum", "30"}}).string()) + " -o " +
+                                             Quote(off.string()) + " -m mp");
+    ASSERT_EQ(run.exitCode, 0) << run.output;
+    std::ifstream in(off);
+    std::string header;
+    int vertices = 0, polygons = 0, edgesUnused = 0;
+    in >> header >> vertices >> polygons >> edgesUnused;
+    ASSERT_EQ(header, "OFF");
+    for (int v = 0; v < vertices; ++v) {
+        double x, y, z;
+        in >> x >> y >> z;
+    }
+    int largerThanTriangles = 0;
+    for (int p = 0; p < polygons; ++p) {
+        int corners = 0;
+        in >> corners;
+        for (int c = 0, index; c < corners; ++c) in >> index;
+        largerThanTriangles += corners > 3;
+    }
+    ASSERT_TRUE(in) << "truncated OFF";
+    // One polygon per region, except a region with a hole or a ring, cut into discs.
+    EXPECT_GE(polygons, 30);
+    EXPECT_LE(polygons, 2 * 30);
+    EXPECT_GE(largerThanTriangles, 15);
+}
+
+TEST(MeshLabServer, OpenMeshKeepsItsBorder)
+{
+    const fs::path dir = WorkDir("open_mesh");
+    const fs::path mesh = vsa_test::CgalMesh("mesh_with_border.off");
+    TMesh input;
+    ASSERT_TRUE(Load(input, mesh));
+    vcg::tri::vsa::MeshDiagnostics inputDiag;
+    vcg::tri::vsa::BuildIndexedMesh(input, &inputDiag);
+    ASSERT_GT(inputDiag.borderEdges, 0);
+    const ScriptCase c = RunScript(dir, mesh, WriteVsaScript(dir, {{"ProxyNum", "20"}}));
+    ExpectGoodApproximation(c, 20, false);
+    TMesh out;
+    ASSERT_TRUE(Load(out, c.approximation));
+    EXPECT_GT(vcg::tri::vsa::CheckMeshValidity(out).borderEdges, 0);
+}
+
+TEST(MeshLabServer, EveryComponentIsApproximated)
+{
+    const fs::path dir = WorkDir("components");
+    const fs::path mesh = vsa_test::CgalMesh("blobby_3cc.off");
+    const ScriptCase c = RunScript(dir, mesh, WriteVsaScript(dir, {{"ProxyNum", "30"}}));
+    ExpectGoodApproximation(c, 30, false);  // blobby_3cc's three components are open
+    TMesh out;
+    ASSERT_TRUE(Load(out, c.approximation));
+    const vcg::tri::vsa::MeshValidity validity = vcg::tri::vsa::CheckMeshValidity(out);
+    EXPECT_EQ(validity.components, 3);
+    EXPECT_GT(validity.borderEdges, 0);
+}
+
+namespace {
+/// A bad input must fail cleanly: meshlabserver reports the failed filter and exits with its
+/// error status (255), not a crash, and the log carries our message.
+void ExpectCleanFailure(const ServerRun &run, const std::string &message)
+{
+    EXPECT_EQ(run.exitCode, 255) << run.output;
+    EXPECT_NE(run.output.find("Problem with filter: Variational Shape Approximation"), std::string::npos) << run.output;
+    EXPECT_NE(run.output.find(message), std::string::npos) << "expected '" << message << "' in\n" << run.output;
+}
+
+fs::path WriteOff(const fs::path &dir, const std::string &name, const std::string &text)
+{
+    const fs::path path = dir / name;
+    std::ofstream(path) << text;
+    return path;
+}
+}  // namespace
+
+TEST(MeshLabServerBadInput, ProxyNumBelowOne)
+{
+    const fs::path dir = WorkDir("bad_k0");
+    ExpectCleanFailure(RunServer(dir, "-i " + Quote(kFandisk) + " -s " +
+                                          Quote(WriteVsaScript(dir, {{"ProxyNum", "0"}}).string())),
+                       "at least 1");
+}
+
+TEST(MeshLabServerBadInput, ProxyNumAboveFaceCount)
+{
+    const fs::path dir = WorkDir("bad_k_large");
+    ExpectCleanFailure(RunServer(dir, "-i " + Quote(kFandisk) + " -s " +
+                                          Quote(WriteVsaScript(dir, {{"ProxyNum", "20000"}}).string())),
+                       "exceeds the number of faces (12946)");
+}
+
+TEST(MeshLabServerBadInput, PointCloud)
+{
+    const fs::path dir = WorkDir("bad_point_cloud");
+    const fs::path cloud = WriteOff(dir, "cloud.off", "OFF\n4 0 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n");
+    ExpectCleanFailure(RunServer(dir, "-i " + Quote(cloud.string()) + " -s " +
+                                          Quote(WriteVsaScript(dir, {{"ProxyNum", "1"}}).string())),
+                       "point cloud");
+}
+
+TEST(MeshLabServerBadInput, NonManifoldEdge)
+{
+    const fs::path dir = WorkDir("bad_non_manifold");
+    // Three triangles sharing the edge 0-1.
+    const fs::path book = WriteOff(dir, "book.off",
+                                   "OFF\n5 3 0\n0 0 0\n1 0 0\n0 1 0\n0 -1 0\n0 0 1\n3 0 1 2\n3 1 0 3\n3 0 1 4\n");
+    ExpectCleanFailure(RunServer(dir, "-i " + Quote(book.string()) + " -s " +
+                                          Quote(WriteVsaScript(dir, {{"ProxyNum", "2"}}).string())),
+                       "non-manifold");
+}
+
+TEST(MeshLabServerBadInput, NaNCoordinates)
+{
+    const fs::path dir = WorkDir("bad_nan");
+    const fs::path mesh = WriteOff(dir, "nan.off", "OFF\n4 2 0\n0 0 0\n1 0 0\n0 1 0\nnan 1 0\n3 0 1 2\n3 2 1 3\n");
+    ExpectCleanFailure(RunServer(dir, "-i " + Quote(mesh.string()) + " -s " +
+                                          Quote(WriteVsaScript(dir, {{"ProxyNum", "1"}}).string())),
+                       "NaN");
+}

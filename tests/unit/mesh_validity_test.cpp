@@ -1,0 +1,189 @@
+#include "test_meshes.h"
+
+#include <vsa/mesh_validity.h>
+
+#include <vcg/complex/algorithms/create/platonic.h>
+
+#include <gtest/gtest.h>
+
+using namespace vcg::tri::vsa;
+using vsa_test::TMesh;
+
+namespace {
+
+// A bare mesh type: double coordinates, no adjacency, no per-face mark, no optional
+// components. The check must need nothing more than vertex references and flags.
+class BVertex;
+class BFace;
+struct BUsedTypes : public vcg::UsedTypes<vcg::Use<BVertex>::AsVertexType, vcg::Use<BFace>::AsFaceType> {};
+class BVertex : public vcg::Vertex<BUsedTypes, vcg::vertex::Coord3d, vcg::vertex::BitFlags> {};
+class BFace : public vcg::Face<BUsedTypes, vcg::face::VertexRef, vcg::face::BitFlags> {};
+class BareMesh : public vcg::tri::TriMesh<std::vector<BVertex>, std::vector<BFace>> {};
+
+MeshValidity Check(const std::vector<vcg::Point3f> &coords, const std::vector<vcg::Point3i> &tris)
+{
+    TMesh m;
+    vsa_test::BuildFromLists(m, coords, tris);
+    return CheckMeshValidity(m);
+}
+
+}  // namespace
+
+TEST(MeshValidity, CubeIsClosedOrientedManifoldWithEulerTwo)
+{
+    TMesh m;
+    vsa_test::MakeTessellatedCube(m, 1);
+    const MeshValidity v = CheckMeshValidity(m);
+    EXPECT_EQ(v.vertices, 8);
+    EXPECT_EQ(v.faces, 12);
+    EXPECT_EQ(v.edges, 18);
+    EXPECT_EQ(v.eulerCharacteristic, 2);
+    EXPECT_EQ(v.components, 1);
+    EXPECT_EQ(v.borderEdges, 0);
+    EXPECT_EQ(v.nonManifoldEdges, 0);
+    EXPECT_EQ(v.nonManifoldVertices, 0);
+    EXPECT_EQ(v.inconsistentEdges, 0);
+    EXPECT_EQ(v.degenerateFaces, 0);
+    EXPECT_EQ(v.duplicateFaces, 0);
+    EXPECT_EQ(v.selfIntersections, 0);
+    EXPECT_TRUE(v.manifold);
+    EXPECT_TRUE(v.closed);
+    EXPECT_TRUE(v.oriented);
+    EXPECT_TRUE(v.IsValid());
+}
+
+TEST(MeshValidity, FinerClosedMeshesHaveNoFalseIntersections)
+{
+    TMesh cube;
+    vsa_test::MakeTessellatedCube(cube, 7);  // many coplanar neighbours sharing edges and vertices
+    MeshValidity v = CheckMeshValidity(cube);
+    EXPECT_EQ(v.selfIntersections, 0);
+    EXPECT_EQ(v.eulerCharacteristic, 2);
+
+    TMesh sphere;
+    vcg::tri::Sphere(sphere, 3);
+    v = CheckMeshValidity(sphere);
+    EXPECT_EQ(v.faces, 20 * 64);
+    EXPECT_EQ(v.selfIntersections, 0);
+    EXPECT_EQ(v.eulerCharacteristic, 2);
+    EXPECT_TRUE(v.closed);
+    EXPECT_TRUE(v.IsValid());
+}
+
+TEST(MeshValidity, OpenSquareHasFourBorderEdges)
+{
+    const MeshValidity v = Check({{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}}, {{0, 1, 2}, {0, 2, 3}});
+    EXPECT_EQ(v.vertices, 4);
+    EXPECT_EQ(v.edges, 5);
+    EXPECT_EQ(v.borderEdges, 4);
+    EXPECT_EQ(v.eulerCharacteristic, 1);  // a disc
+    EXPECT_FALSE(v.closed);
+    EXPECT_TRUE(v.manifold);
+    EXPECT_TRUE(v.oriented);
+    EXPECT_EQ(v.selfIntersections, 0);  // the two faces are coplanar and share an edge
+    EXPECT_TRUE(v.IsValid());
+}
+
+TEST(MeshValidity, NonManifoldEdgeAndVertex)
+{
+    // Three triangles on edge 0-1.
+    MeshValidity v = Check({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}}, {{0, 1, 2}, {1, 0, 3}, {0, 1, 4}});
+    EXPECT_EQ(v.nonManifoldEdges, 1);
+    EXPECT_EQ(v.edges, 7);
+    EXPECT_FALSE(v.manifold);
+    EXPECT_EQ(v.selfIntersections, 0);
+
+    // Two tetrahedra sharing only vertex 0: closed, edge-manifold, one non-manifold vertex.
+    v = Check({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {-1, 0, 0}, {0, -1, 0}, {0, 0, -1}},
+              {{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}, {0, 5, 4}, {0, 4, 6}, {0, 6, 5}, {4, 5, 6}});
+    EXPECT_EQ(v.nonManifoldEdges, 0);
+    EXPECT_EQ(v.nonManifoldVertices, 1);
+    EXPECT_TRUE(v.closed);
+    EXPECT_TRUE(v.oriented);
+    EXPECT_FALSE(v.manifold);
+    EXPECT_EQ(v.eulerCharacteristic, 7 - 12 + 8);
+    EXPECT_EQ(v.selfIntersections, 0);
+}
+
+TEST(MeshValidity, TwoCrossingTrianglesIntersectOnce)
+{
+    const MeshValidity v = Check({{0, 0, 0}, {2, 0, 0}, {0, 2, 0}, {0.5f, 0.5f, -1}, {0.5f, 0.5f, 1}, {3, 3, 0}},
+                                 {{0, 1, 2}, {3, 4, 5}});
+    EXPECT_EQ(v.selfIntersections, 1);
+    EXPECT_EQ(v.components, 2);
+    EXPECT_FALSE(v.IsValid());
+
+    // The same two, moved apart.
+    const MeshValidity apart = Check({{0, 0, 0}, {2, 0, 0}, {0, 2, 0}, {5.5f, 0.5f, -1}, {5.5f, 0.5f, 1}, {8, 3, 0}},
+                                     {{0, 1, 2}, {3, 4, 5}});
+    EXPECT_EQ(apart.selfIntersections, 0);
+}
+
+TEST(MeshValidity, IntersectionsThroughSharedVerticesAndFolds)
+{
+    // Sharing vertex 0, the second triangle pierces the first.
+    MeshValidity v = Check({{0, 0, 0}, {2, 0, 0}, {0, 2, 0}, {1, 1, -1}, {1, 1, 1}}, {{0, 1, 2}, {0, 3, 4}});
+    EXPECT_EQ(v.selfIntersections, 1);
+    // Sharing vertex 0, leaning away: no intersection.
+    v = Check({{0, 0, 0}, {2, 0, 0}, {0, 2, 0}, {-1, -1, 1}, {-1, -2, 1}}, {{0, 1, 2}, {0, 3, 4}});
+    EXPECT_EQ(v.selfIntersections, 0);
+    // Coplanar, sharing edge 0-1, folded onto each other (third vertices on the same side).
+    v = Check({{0, 0, 0}, {2, 0, 0}, {0, 2, 0}, {1, 1, 0}}, {{0, 1, 2}, {1, 0, 3}});
+    EXPECT_EQ(v.selfIntersections, 1);
+    // Coplanar fan triangles sharing vertex 0 whose sectors overlap.
+    v = Check({{0, 0, 0}, {2, 0, 0}, {0, 2, 0}, {2, 1, 0}, {1, 2, 0}}, {{0, 1, 2}, {0, 3, 4}});
+    EXPECT_EQ(v.selfIntersections, 1);
+    // Coplanar triangles sharing vertex 0 side by side: no overlap.
+    v = Check({{0, 0, 0}, {2, 0, 0}, {2, 2, 0}, {0, 2, 0}, {-2, 2, 0}}, {{0, 1, 2}, {0, 3, 4}});
+    EXPECT_EQ(v.selfIntersections, 0);
+    // Coplanar, disjoint vertices, one inside the other.
+    v = Check({{0, 0, 0}, {4, 0, 0}, {0, 4, 0}, {0.5f, 0.5f, 0}, {1, 0.5f, 0}, {0.5f, 1, 0}}, {{0, 1, 2}, {3, 4, 5}});
+    EXPECT_EQ(v.selfIntersections, 1);
+}
+
+TEST(MeshValidity, CoincidentCornersCountAsShared)
+{
+    // An unmerged square (each triangle with its own vertices) and two triangles meeting at
+    // one point from two copies of it: touching, not intersecting.
+    MeshValidity v = Check({{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 0, 0}, {1, 1, 0}, {0, 1, 0}}, {{0, 1, 2}, {3, 4, 5}});
+    EXPECT_EQ(v.selfIntersections, 0);
+    EXPECT_EQ(v.borderEdges, 6);
+    v = Check({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 0}, {-1, 0, 1}, {0, -1, 1}}, {{0, 1, 2}, {3, 4, 5}});
+    EXPECT_EQ(v.selfIntersections, 0);
+    // But an unmerged copy folded onto its neighbour does intersect.
+    v = Check({{0, 0, 0}, {2, 0, 0}, {0, 2, 0}, {2, 0, 0}, {0, 0, 0}, {1, 1, 0}}, {{0, 1, 2}, {4, 3, 5}});
+    EXPECT_EQ(v.selfIntersections, 1);
+}
+
+TEST(MeshValidity, DuplicateDegenerateAndFlippedFaces)
+{
+    MeshValidity v = Check({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {2, 2, 2}, {3, 3, 3}, {4, 4, 4}},
+                           {{0, 1, 2}, {0, 1, 2}, {2, 1, 0}, {3, 4, 5}});
+    EXPECT_EQ(v.duplicateFaces, 2);
+    EXPECT_EQ(v.degenerateFaces, 1);
+    EXPECT_EQ(v.selfIntersections, 0);  // duplicates and degenerate faces are counted as such only
+    EXPECT_FALSE(v.IsValid());
+
+    v = Check({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 1, 0}}, {{0, 1, 2}, {1, 2, 3}});
+    EXPECT_EQ(v.inconsistentEdges, 1);
+    EXPECT_FALSE(v.oriented);
+}
+
+TEST(MeshValidity, WorksOnABareDoubleMeshAndCanSkipIntersections)
+{
+    BareMesh m;
+    vcg::tri::Hexahedron(m);  // quads split: 8 vertices, 12 faces
+    MeshValidity v = CheckMeshValidity(m);
+    EXPECT_EQ(v.faces, 12);
+    EXPECT_EQ(v.eulerCharacteristic, 2);
+    EXPECT_EQ(v.selfIntersections, 0);
+    EXPECT_TRUE(v.IsValid());
+    v = CheckMeshValidity(m, false);
+    EXPECT_EQ(v.selfIntersections, -1);
+    EXPECT_NE(v.Summary().find("not checked"), std::string::npos);
+
+    BareMesh empty;
+    v = CheckMeshValidity(empty);
+    EXPECT_EQ(v.faces, 0);
+    EXPECT_EQ(v.selfIntersections, 0);
+}

@@ -1,0 +1,534 @@
+#include "meshing_test_util.h"
+#include "test_meshes.h"
+
+#include <vsa/meshing.h>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <set>
+
+using namespace vcg::tri::vsa;
+using vcg::Point3d;
+using vsa_test::TMesh;
+
+namespace {
+
+// An output mesh type with nothing optional: no normals, no adjacency; flags only.
+class BVertex;
+class BFace;
+struct BUsedTypes : public vcg::UsedTypes<vcg::Use<BVertex>::AsVertexType, vcg::Use<BFace>::AsFaceType> {};
+class BVertex : public vcg::Vertex<BUsedTypes, vcg::vertex::Coord3d, vcg::vertex::BitFlags> {};
+class BFace : public vcg::Face<BUsedTypes, vcg::face::VertexRef, vcg::face::BitFlags> {};
+class BareMesh : public vcg::tri::TriMesh<std::vector<BVertex>, std::vector<BFace>> {};
+
+struct MeshingRun
+{
+    IndexedMesh input;
+    MeshValidity inputValidity;
+    TMesh out;
+    IndexedMesh output;
+    MeshingReport report;
+};
+
+/// Meshes `m` with `partition` and snapshots the output.
+void Mesh(const TMesh &m, const Partition &partition, const MeshingParam &param, MeshingRun &run)
+{
+    MeshDiagnostics diag;
+    run.input = BuildIndexedMesh(m, &diag);
+    run.inputValidity = CheckMeshValidity(run.input, diag, false);
+    run.report = BuildApproximatingMesh(run.input, partition, param, run.out);
+    run.output = BuildIndexedMesh(run.out);
+}
+
+/// What every output must be: a valid mesh with the input's topology.
+void ExpectValidWithInputTopology(const MeshingRun &run)
+{
+    ASSERT_TRUE(run.report.ok) << run.report.error;
+    const MeshValidity &v = run.report.validity;
+    EXPECT_TRUE(v.manifold) << v.Summary();
+    EXPECT_TRUE(v.oriented) << v.Summary();
+    EXPECT_EQ(v.degenerateFaces, 0) << v.Summary();
+    EXPECT_EQ(v.duplicateFaces, 0) << v.Summary();
+    EXPECT_EQ(v.closed, run.inputValidity.closed) << v.Summary();
+    EXPECT_EQ(v.components, run.inputValidity.components) << v.Summary();
+    EXPECT_EQ(v.eulerCharacteristic, run.inputValidity.eulerCharacteristic) << v.Summary();
+    EXPECT_EQ(int(run.report.faceRegion.size()), v.faces);
+    EXPECT_EQ(int(run.report.vertexSource.size()), v.vertices);
+    EXPECT_EQ(run.report.regionsByFlooding + run.report.regionsByEarClipping + run.report.regionsWithSteinerVertex,
+              run.report.regions);
+}
+
+/// Every region with faces in the partition has faces in the output.
+void ExpectNoRegionDropped(const MeshingRun &run, const Partition &partition)
+{
+    std::set<int> in(partition.faceRegion.begin(), partition.faceRegion.end());
+    std::set<int> out(run.report.faceRegion.begin(), run.report.faceRegion.end());
+    EXPECT_EQ(in, out);
+    EXPECT_EQ(run.report.regions, int(in.size()));
+}
+
+std::vector<Point3d> Positions(const IndexedMesh &m) { return m.positions; }
+
+}  // namespace
+
+TEST(Meshing, CubeSixRegionsGivesTheEightCorners)
+{
+    TMesh cube;
+    vsa_test::MakeTessellatedCube(cube, 4);
+    for (bool project : {true, false}) {
+        SCOPED_TRACE(project ? "projected anchors" : "anchors at input vertices");
+        MeshingParam param;
+        param.projectAnchors = project;
+        MeshingRun run;
+        const Partition partition = vsa_test::DominantAxisPartition(BuildIndexedMesh(cube));
+        Mesh(cube, partition, param, run);
+        ExpectValidWithInputTopology(run);
+        EXPECT_EQ(run.report.anchors, 8);
+        EXPECT_EQ(run.report.junctionAnchors, 8);
+        EXPECT_EQ(run.report.steinerVertices, 0);
+        EXPECT_EQ(run.report.regionsCut, 0);
+        EXPECT_EQ(run.out.VN(), 8);
+        EXPECT_EQ(run.out.FN(), 12);
+        EXPECT_EQ(run.report.validity.selfIntersections, 0);
+        for (const Point3d &p : run.output.positions)
+            for (int i = 0; i < 3; ++i) EXPECT_NEAR(std::abs(p[i]), 1.0, 1e-7);
+        // Hausdorff distance 0: the output's corners are the cube's, and every input vertex
+        // lies on the output surface.
+        EXPECT_LT(vsa_test::MaxDistanceToSurface(Positions(run.input), run.output), 1e-6);
+        std::vector<int> perRegion(6, 0);
+        for (int r : run.report.faceRegion) ++perRegion[r];
+        EXPECT_EQ(perRegion, std::vector<int>(6, 2));
+        // Each side's two triangles lie in its plane, oriented outward like the input.
+        for (int f = 0; f < run.output.FaceCount(); ++f) {
+            const Point3d n = vsa_test::FaceNormal(run.output, f);
+            EXPECT_EQ(vsa_test::DominantAxisLabel(n), run.report.faceRegion[f]);
+            EXPECT_NEAR(std::abs(n[run.report.faceRegion[f] / 2]), 1.0, 1e-7);
+        }
+    }
+}
+
+TEST(Meshing, PolygonalCubeFlagsOneDiagonalPerSide)
+{
+    TMesh cube;
+    vsa_test::MakeTessellatedCube(cube, 3);
+    MeshingParam param;
+    param.polygonal = true;
+    MeshingRun run;
+    Mesh(cube, vsa_test::DominantAxisPartition(BuildIndexedMesh(cube)), param, run);
+    ExpectValidWithInputTopology(run);
+    std::set<std::pair<int, int>> fauxEdges, outlineEdges;
+    for (const auto &f : run.out.face) {
+        int faux = 0;
+        for (int i = 0; i < 3; ++i) {
+            const int a = int(vcg::tri::Index(run.out, f.cV(i))), b = int(vcg::tri::Index(run.out, f.cV((i + 1) % 3)));
+            const std::pair<int, int> edge(std::min(a, b), std::max(a, b));
+            if (f.IsF(i)) {
+                ++faux;
+                fauxEdges.insert(edge);
+                // A diagonal of a side: its ends differ in two coordinates.
+                const Point3d d = Point3d::Construct(f.cP(i) - f.cP((i + 1) % 3));
+                EXPECT_EQ((std::abs(d[0]) > 1) + (std::abs(d[1]) > 1) + (std::abs(d[2]) > 1), 2);
+            } else {
+                outlineEdges.insert(edge);
+            }
+        }
+        EXPECT_EQ(faux, 1);
+    }
+    EXPECT_EQ(fauxEdges.size(), 6u);
+    EXPECT_EQ(outlineEdges.size(), 12u);  // the cube's edges
+}
+
+TEST(Meshing, ChordThresholdOnAFlatDisc)
+{
+    TMesh disc;
+    vsa_test::MakeHemisphere(disc, 4, 24, /*flat=*/true);
+    const IndexedMesh im = BuildIndexedMesh(disc);
+    const Partition one = vsa_test::PartitionByRule(im, 1, [](int) { return 0; });
+
+    // Threshold 0 keeps every bend of the border: each border vertex becomes an anchor.
+    MeshingParam param;
+    param.chordThreshold = 0;
+    MeshingRun fine;
+    Mesh(disc, one, param, fine);
+    ExpectValidWithInputTopology(fine);
+    EXPECT_EQ(fine.report.anchors, 24);
+    EXPECT_EQ(fine.out.FN(), 22);
+    EXPECT_EQ(vsa_test::BorderLoopCount(fine.output), 1);
+    EXPECT_EQ(fine.report.validity.selfIntersections, 0);
+    EXPECT_NEAR(vsa_test::SurfaceArea(fine.output), vsa_test::SurfaceArea(im), 1e-6);
+
+    // A huge threshold keeps the least a loop needs: one seed, the farthest point from it
+    // (a closed chain is always split), and the farthest point from their chord.
+    param.chordThreshold = 1e9;
+    MeshingRun coarse;
+    Mesh(disc, one, param, coarse);
+    ExpectValidWithInputTopology(coarse);
+    EXPECT_EQ(coarse.report.anchors, 3);
+    EXPECT_EQ(coarse.report.loopSeedAnchors, 1);
+    EXPECT_EQ(coarse.report.chordAnchors, 1);
+    EXPECT_EQ(coarse.report.loopAnchors, 1);
+    EXPECT_EQ(coarse.out.FN(), 1);
+
+    // In between, the paper's criterion: fewer anchors for a larger threshold.
+    int previous = std::numeric_limits<int>::max();
+    for (double threshold : {0.01, 0.05, 0.1, 0.3}) {
+        param.chordThreshold = threshold;
+        MeshingRun run;
+        Mesh(disc, one, param, run);
+        ExpectValidWithInputTopology(run);
+        EXPECT_LE(run.report.anchors, previous);
+        previous = run.report.anchors;
+    }
+    EXPECT_LT(previous, 24);
+    EXPECT_GT(previous, 3);
+}
+
+TEST(Meshing, TorusKeepsItsGenusWhateverTheRegions)
+{
+    TMesh torus;
+    vsa_test::MakeTorus(torus, 2.f, 0.7f, 32, 16);
+    const IndexedMesh im = BuildIndexedMesh(torus);
+    auto sector = [&](int f, int count) {
+        const Point3d c = vsa_test::FaceCentroid(im, f);
+        const double angle = std::atan2(c[1], c[0]) + M_PI;
+        return std::min(count - 1, int(angle / (2 * M_PI) * count));
+    };
+    // Eight bands around the tube: every region is a ring.
+    const Partition bands = vsa_test::PartitionByRule(im, 8, [&](int f) { return sector(f, 8); });
+    // Eight sectors, each split into the outer and inner half of the tube: discs.
+    const Partition discs = vsa_test::PartitionByRule(im, 16, [&](int f) {
+        const Point3d c = vsa_test::FaceCentroid(im, f);
+        return 2 * sector(f, 8) + (std::hypot(c[0], c[1]) > 2.0 ? 1 : 0);
+    });
+    // The whole torus as one region.
+    const Partition whole = vsa_test::PartitionByRule(im, 1, [](int) { return 0; });
+    struct Case
+    {
+        const char *name;
+        const Partition &partition;
+        int cut;
+    };
+    for (const Case &c : {Case{"bands", bands, 8}, Case{"discs", discs, 0}, Case{"whole", whole, 1}}) {
+        SCOPED_TRACE(c.name);
+        MeshingRun run;
+        Mesh(torus, c.partition, MeshingParam(), run);
+        ExpectValidWithInputTopology(run);
+        ExpectNoRegionDropped(run, c.partition);
+        EXPECT_EQ(run.report.validity.eulerCharacteristic, 0);
+        EXPECT_TRUE(run.report.validity.closed);
+        EXPECT_EQ(run.report.regionsCut, c.cut);
+    }
+}
+
+TEST(Meshing, BoxWithCylindricalHoleKeepsItsGenus)
+{
+    TMesh box;
+    vsa_test::MakeBoxWithHole(box, 32);
+    const IndexedMesh im = BuildIndexedMesh(box);
+    // Six regions by the normal's dominant axis: the top and bottom are rings, and each side
+    // region also holds the arc of the hole's wall that faces the same way (two pieces).
+    const Partition axes = vsa_test::DominantAxisPartition(im);
+    // Ten regions: top, bottom, four outer sides, four quarters of the hole.
+    const Partition ten = vsa_test::PartitionByRule(im, 10, [&](int f) {
+        const Point3d c = vsa_test::FaceCentroid(im, f), n = vsa_test::FaceNormal(im, f);
+        if (std::abs(n[2]) > 0.5) return n[2] > 0 ? 0 : 1;
+        if (std::hypot(c[0], c[1]) > 0.9) return 2 + vsa_test::DominantAxisLabel(n);  // 2..5
+        return 6 + std::min(3, int((std::atan2(c[1], c[0]) + M_PI) / (0.5 * M_PI)));
+    });
+    for (const Partition *partition : {&axes, &ten}) {
+        SCOPED_TRACE(partition == &axes ? "six regions" : "ten regions");
+        MeshingRun run;
+        Mesh(box, *partition, MeshingParam(), run);
+        ExpectValidWithInputTopology(run);
+        ExpectNoRegionDropped(run, *partition);
+        EXPECT_EQ(run.report.validity.eulerCharacteristic, 0);
+        EXPECT_TRUE(run.report.validity.closed);
+        EXPECT_GE(run.report.regionsCut, 2);  // the two rings at least
+    }
+}
+
+TEST(Meshing, OpenHemisphereKeepsItsBorder)
+{
+    TMesh dome;
+    vsa_test::MakeHemisphere(dome, 8, 32);
+    const IndexedMesh im = BuildIndexedMesh(dome);
+    const std::set<int> inputBorder = vsa_test::BorderVertices(im);
+    // A polar cap and four sectors around it, every sector meeting the border.
+    const Partition five = vsa_test::PartitionByRule(im, 5, [&](int f) {
+        const Point3d c = vsa_test::FaceCentroid(im, f);
+        if (c[2] > 0.8) return 4;
+        return std::min(3, int((std::atan2(c[1], c[0]) + M_PI) / (0.5 * M_PI)));
+    });
+    const Partition one = vsa_test::PartitionByRule(im, 1, [](int) { return 0; });
+    for (const Partition *partition : {&five, &one})
+        for (bool project : {false, true}) {
+            SCOPED_TRACE(std::string(partition == &five ? "five regions" : "one region") +
+                         (project ? ", projected" : ", not projected"));
+            MeshingParam param;
+            param.projectAnchors = project;
+            MeshingRun run;
+            Mesh(dome, *partition, param, run);
+            ExpectValidWithInputTopology(run);
+            ExpectNoRegionDropped(run, *partition);
+            EXPECT_EQ(run.report.validity.eulerCharacteristic, 1);
+            EXPECT_EQ(vsa_test::BorderLoopCount(run.output), 1);
+            // The output's border vertices are input border vertices (or their projections).
+            auto sourceOf = [&](int v) { return run.report.vertexSource[run.output.sourceVertex[v]]; };
+            const std::set<int> border = vsa_test::BorderVertices(run.output);
+            EXPECT_GE(border.size(), 3u);
+            for (int v : border) {
+                ASSERT_TRUE(inputBorder.count(sourceOf(v))) << "output border vertex " << v;
+                const double moved = (run.output.positions[v] - im.positions[sourceOf(v)]).Norm();
+                if (!project) EXPECT_EQ(moved, 0.0);
+                else EXPECT_LE(moved, param.maxAnchorMove * 2.0 + 1e-6);  // chords are at most a diameter
+            }
+            // Inner output vertices come from inner input vertices: the border is not crossed.
+            for (int v = 0; v < run.output.VertexCount(); ++v)
+                if (!border.count(v)) {
+                    EXPECT_FALSE(inputBorder.count(sourceOf(v)));
+                }
+        }
+}
+
+TEST(Meshing, IslandAndRingRegionsOnAFlatSquare)
+{
+    TMesh square;
+    vsa_test::MakeFlatSquare(square, 16);
+    const IndexedMesh im = BuildIndexedMesh(square);
+    const Partition rings = vsa_test::PartitionByRule(im, 3, [&](int f) {
+        const Point3d c = vsa_test::FaceCentroid(im, f);
+        const double r = std::hypot(c[0], c[1]);
+        return r < 0.3 ? 0 : (r < 0.65 ? 1 : 2);  // island, ring around it, the rest
+    });
+    for (bool polygonal : {false, true}) {
+        MeshingParam param;
+        param.polygonal = polygonal;
+        param.chordThreshold = 0.01;  // keeps the square's corners, which cut off 6% of a chord
+        MeshingRun run;
+        Mesh(square, rings, param, run);
+        ExpectValidWithInputTopology(run);
+        ExpectNoRegionDropped(run, rings);
+        EXPECT_EQ(vsa_test::BorderLoopCount(run.output), 1);
+        EXPECT_EQ(run.report.regionsCut, 2);       // the ring and the square around it
+        EXPECT_EQ(run.report.validity.selfIntersections, 0);
+        for (const Point3d &p : run.output.positions) EXPECT_EQ(p[2], 0.0);
+        // Flat in, flat out: the output tiles the same square, without overlap or gap.
+        EXPECT_NEAR(vsa_test::SurfaceArea(run.output), 4.0, 1e-5);
+        if (polygonal) {
+            // Every outline edge separates two regions or is on the border.
+            for (const auto &f : run.out.face)
+                for (int i = 0; i < 3; ++i) {
+                    if (f.IsF(i)) continue;
+                    const TMesh::FaceType *g = nullptr;
+                    for (const auto &h : run.out.face)
+                        for (int j = 0; j < 3; ++j)
+                            if (&h != &f && h.cV(j) == f.cV((i + 1) % 3) && h.cV((j + 1) % 3) == f.cV(i)) g = &h;
+                    if (g) {
+                        EXPECT_NE(run.report.faceRegion[vcg::tri::Index(run.out, f)],
+                                  run.report.faceRegion[vcg::tri::Index(run.out, *g)]);
+                    }
+                }
+        }
+    }
+}
+
+TEST(Meshing, ClosedRegionsWithoutBoundary)
+{
+    TMesh sphere;
+    vcg::tri::Sphere(sphere, 3);
+    const IndexedMesh im = BuildIndexedMesh(sphere);
+    const Partition one = vsa_test::PartitionByRule(im, 1, [](int) { return 0; });
+    const Partition halves =
+        vsa_test::PartitionByRule(im, 2, [&](int f) { return vsa_test::FaceCentroid(im, f)[2] > 0 ? 1 : 0; });
+    for (const Partition *partition : {&one, &halves}) {
+        MeshingRun run;
+        Mesh(sphere, *partition, MeshingParam(), run);
+        ExpectValidWithInputTopology(run);
+        ExpectNoRegionDropped(run, *partition);
+        EXPECT_EQ(run.report.validity.eulerCharacteristic, 2);
+        EXPECT_GE(run.out.FN(), 4);
+        // One region: its two halves meet along a cut whose anchors stay on the sphere, so
+        // the output has volume. Two opposite planes, by contrast, make the faithful output
+        // a flat double-sided polygon, whose two sides overlap: not checked.
+        if (partition == &one) {
+            EXPECT_EQ(run.report.validity.selfIntersections, 0);
+        }
+    }
+}
+
+TEST(Meshing, FragmentedAndPinchedRegionsStillGiveAValidMesh)
+{
+    // Labels that scatter each region over many pieces, touching at vertices: the worst a
+    // partition can do. Geometry is nonsense, but the topology must hold.
+    TMesh cube;
+    vsa_test::MakeTessellatedCube(cube, 6);
+    const IndexedMesh im = BuildIndexedMesh(cube);
+    for (int k : {2, 3, 5}) {
+        SCOPED_TRACE(k);
+        const Partition scattered = vsa_test::PartitionByRule(im, k, [&](int f) { return int((f * 7919u) % k); });
+        MeshingRun run;
+        Mesh(cube, scattered, MeshingParam(), run);
+        ExpectValidWithInputTopology(run);
+        ExpectNoRegionDropped(run, scattered);
+        EXPECT_EQ(run.report.validity.eulerCharacteristic, 2);
+    }
+    TMesh torus;
+    vsa_test::MakeTorus(torus, 2.f, 0.7f, 24, 12);
+    const IndexedMesh tim = BuildIndexedMesh(torus);
+    const Partition scattered = vsa_test::PartitionByRule(tim, 4, [&](int f) { return int((f * 104729u) % 4); });
+    MeshingRun run;
+    Mesh(torus, scattered, MeshingParam(), run);
+    ExpectValidWithInputTopology(run);
+    EXPECT_EQ(run.report.validity.eulerCharacteristic, 0);
+}
+
+TEST(Meshing, NonManifoldVertexIsSplitPerFan)
+{
+    // Two tetrahedra sharing only vertex 0.
+    TMesh m;
+    vsa_test::BuildFromLists(m, {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {-1, 0, 0}, {0, -1, 0}, {0, 0, -1}},
+                             {{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}, {0, 5, 4}, {0, 4, 6}, {0, 6, 5}, {4, 5, 6}});
+    const IndexedMesh im = BuildIndexedMesh(m);
+    const Partition perFace = vsa_test::PartitionByRule(im, 8, [](int f) { return f; });
+    MeshingRun run;
+    Mesh(m, perFace, MeshingParam(), run);
+    ASSERT_TRUE(run.report.ok) << run.report.error;
+    EXPECT_EQ(run.report.splitVertices, 1);
+    EXPECT_TRUE(run.report.validity.IsValid()) << run.report.validity.Summary();
+    EXPECT_EQ(run.report.validity.nonManifoldVertices, 0);
+    EXPECT_EQ(run.report.validity.components, 2);
+    EXPECT_EQ(run.report.validity.eulerCharacteristic, 4);
+    EXPECT_EQ(run.out.VN(), 8);  // each tetrahedron keeps its four corners
+    EXPECT_EQ(run.out.FN(), 8);
+}
+
+TEST(Meshing, RejectsWhatItCannotMeshWithAClearError)
+{
+    auto expectError = [](const TMesh &m, const Partition &p, const std::string &words) {
+        TMesh out;
+        const MeshingReport r = BuildApproximatingMesh(BuildIndexedMesh(m), p, MeshingParam(), out);
+        EXPECT_FALSE(r.ok);
+        EXPECT_NE(r.error.find(words), std::string::npos) << r.error;
+        EXPECT_EQ(out.VN(), 0);
+        EXPECT_EQ(out.FN(), 0);
+        EXPECT_NE(r.Summary().find(words), std::string::npos);
+    };
+    TMesh book;  // three faces on one edge
+    vsa_test::BuildFromLists(book, {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}}, {{0, 1, 2}, {1, 0, 3}, {0, 1, 4}});
+    expectError(book, vsa_test::PartitionByRule(BuildIndexedMesh(book), 1, [](int) { return 0; }), "non-manifold");
+
+    TMesh flipped;
+    vsa_test::BuildFromLists(flipped, {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 1, 0}}, {{0, 1, 2}, {1, 2, 3}});
+    expectError(flipped, vsa_test::PartitionByRule(BuildIndexedMesh(flipped), 1, [](int) { return 0; }), "oriented");
+
+    TMesh cube;
+    vsa_test::MakeTessellatedCube(cube, 1);
+    Partition p = vsa_test::DominantAxisPartition(BuildIndexedMesh(cube));
+    Partition shortLabels = p;
+    shortLabels.faceRegion.pop_back();
+    expectError(cube, shortLabels, "partition labels 11 faces");
+    Partition outOfRange = p;
+    outOfRange.faceRegion[3] = 6;
+    expectError(cube, outOfRange, "region 6");
+    TMesh nan;
+    vcg::tri::Append<TMesh, TMesh>::MeshCopy(nan, cube);
+    nan.vert[0].P()[1] = std::numeric_limits<float>::quiet_NaN();
+    expectError(nan, p, "NaN");
+}
+
+TEST(Meshing, IgnoresFacesWithARepeatedVertexAndBadProxies)
+{
+    TMesh cube;
+    vsa_test::MakeTessellatedCube(cube, 2);
+    vcg::tri::Allocator<TMesh>::AddFace(cube, &cube.vert[0], &cube.vert[0], &cube.vert[1]);
+    const IndexedMesh im = BuildIndexedMesh(cube);
+    Partition p = vsa_test::DominantAxisPartition(im);
+    p.faceRegion.back() = 0;
+    p.proxies[1].normal = Point3d(0, 0, 0);  // unusable: replaced by the region's own plane
+    p.proxies[2].point[0] = std::numeric_limits<double>::infinity();
+    TMesh out;
+    const MeshingReport r = BuildApproximatingMesh(im, p, MeshingParam(), out);
+    ASSERT_TRUE(r.ok) << r.error;
+    EXPECT_EQ(r.ignoredFaces, 1);
+    EXPECT_EQ(out.VN(), 8);
+    EXPECT_EQ(out.FN(), 12);
+    EXPECT_TRUE(r.validity.IsValid()) << r.validity.Summary();
+    for (const auto &v : out.vert)
+        for (int i = 0; i < 3; ++i) EXPECT_NEAR(std::abs(v.cP()[i]), 1.0, 1e-6);
+}
+
+TEST(Meshing, AnchorProjectionAveragesThePlanesAndIsCapped)
+{
+    // A cube whose corner (1,1,1) is off the three planes; proxies are the exact planes.
+    TMesh cube;
+    vsa_test::MakeTessellatedCube(cube, 2);
+    for (auto &v : cube.vert)
+        if (v.P() == vcg::Point3f(1, 1, 1)) v.P() = vcg::Point3f(1.03f, 1.01f, 0.98f);
+    const IndexedMesh im = BuildIndexedMesh(cube);
+    Partition p = vsa_test::DominantAxisPartition(im);
+    for (int r = 0; r < 6; ++r) {
+        Point3d n(0, 0, 0);
+        n[r / 2] = r % 2 ? 1 : -1;
+        p.proxies[r].normal = n;
+        p.proxies[r].point = n;
+    }
+    const Point3d original = Point3d::Construct(vcg::Point3f(1.03f, 1.01f, 0.98f));
+    // Average of the projections on x = 1, y = 1, z = 1.
+    const Point3d expected = (Point3d(1, original[1], original[2]) + Point3d(original[0], 1, original[2]) +
+                              Point3d(original[0], original[1], 1)) / 3.0;
+    auto cornerOf = [](const TMesh &out, const MeshingReport &r, const IndexedMesh &in, const Point3d &source) {
+        for (int v = 0; v < out.VN(); ++v)
+            if (in.positions[r.vertexSource[v]] == source) return Point3d::Construct(out.vert[v].cP());
+        return Point3d(0, 0, 0);
+    };
+    MeshingParam param;
+    TMesh out;
+    MeshingReport r = BuildApproximatingMesh(im, p, param, out);
+    ASSERT_TRUE(r.ok);
+    EXPECT_LT((cornerOf(out, r, im, original) - expected).Norm(), 1e-6);
+    // Other corners were on their planes already.
+    EXPECT_LT((cornerOf(out, r, im, Point3d(-1, -1, -1)) - Point3d(-1, -1, -1)).Norm(), 1e-7);
+
+    param.projectAnchors = false;
+    r = BuildApproximatingMesh(im, p, param, out);
+    EXPECT_EQ(cornerOf(out, r, im, original), original);
+
+    // Capped at maxAnchorMove times the shortest chord at the anchor (about 2).
+    param.projectAnchors = true;
+    param.maxAnchorMove = 0.002;
+    r = BuildApproximatingMesh(im, p, param, out);
+    const double moved = (cornerOf(out, r, im, original) - original).Norm();
+    const double shortestChord = (original - Point3d(1, 1, -1)).Norm();
+    EXPECT_NEAR(moved, 0.002 * shortestChord, 1e-6);
+}
+
+TEST(Meshing, WritesIntoABareMeshTypeAndIsDeterministic)
+{
+    TMesh torus;
+    vsa_test::MakeTorus(torus, 2.f, 0.5f, 40, 20);
+    const IndexedMesh im = BuildIndexedMesh(torus);
+    const Partition p = vsa_test::PartitionByRule(im, 12, [&](int f) {
+        const Point3d c = vsa_test::FaceCentroid(im, f);
+        const int around = std::min(5, int((std::atan2(c[1], c[0]) + M_PI) / (M_PI / 3)));
+        return 2 * around + (c[2] > 0 ? 1 : 0);
+    });
+    MeshingParam param;
+    param.polygonal = true;
+    BareMesh first, second;
+    const MeshingReport a = BuildApproximatingMesh(im, p, param, first);
+    const MeshingReport b = BuildApproximatingMesh(im, p, param, second);
+    ASSERT_TRUE(a.ok) << a.error;
+    EXPECT_TRUE(a.validity.IsValid()) << a.validity.Summary();
+    EXPECT_EQ(a.validity.eulerCharacteristic, 0);
+    ASSERT_EQ(first.VN(), second.VN());
+    ASSERT_EQ(first.FN(), second.FN());
+    for (int v = 0; v < first.VN(); ++v) EXPECT_EQ(first.vert[v].cP(), second.vert[v].cP());
+    for (int f = 0; f < first.FN(); ++f)
+        for (int i = 0; i < 3; ++i) {
+            EXPECT_EQ(vcg::tri::Index(first, first.face[f].cV(i)), vcg::tri::Index(second, second.face[f].cV(i)));
+            EXPECT_EQ(first.face[f].IsF(i), second.face[f].IsF(i));
+        }
+    EXPECT_EQ(a.faceRegion, b.faceRegion);
+}

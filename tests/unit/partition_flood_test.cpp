@@ -1,0 +1,184 @@
+// The flood: its queue pops in the textbook order, and its labels are the textbook flood's.
+#include "partition_test_helpers.h"
+
+#include <vsa/face_geometry.h>
+#include <vsa/metrics.h>
+#include <vsa/partition.h>
+#include <vsa/seeding.h>
+
+#include <gtest/gtest.h>
+
+#include <queue>
+#include <tuple>
+
+using namespace vcg::tri::vsa;
+using vcg::Point3d;
+
+namespace {
+
+using Key = std::tuple<double, int, int>;  // (error, face, region), smallest first
+using ReferenceQueue = std::priority_queue<Key, std::vector<Key>, std::greater<Key>>;
+
+/// The paper's flood with a std::priority_queue and no shortcut: every neighbour is queued.
+template <class Metric>
+std::vector<int> TextbookFlood(const IndexedMesh &mesh, const Metric &metric, const std::vector<Proxy> &proxies,
+                               const std::vector<int> &seeds)
+{
+    std::vector<int> label(mesh.FaceCount(), -1);
+    ReferenceQueue queue;
+    for (int r = 0; r < int(seeds.size()); ++r) label[seeds[r]] = r;
+    for (int r = 0; r < int(seeds.size()); ++r)
+        for (int g : mesh.neighbors[seeds[r]])
+            if (g >= 0 && label[g] < 0) queue.emplace(metric.Error(g, proxies[r]), g, r);
+    while (!queue.empty()) {
+        const auto [error, face, region] = queue.top();
+        queue.pop();
+        if (label[face] >= 0) continue;
+        label[face] = region;
+        for (int g : mesh.neighbors[face])
+            if (g >= 0 && label[g] < 0) queue.emplace(metric.Error(g, proxies[region]), g, region);
+    }
+    return label;
+}
+
+/// A state with fitted proxies and seeds, as the Lloyd loop floods from.
+template <class Metric>
+RegionState SeededState(const IndexedMesh &mesh, const Metric &metric, const FaceGeometry &g, int k, uint64_t seed)
+{
+    RegionState s;
+    PartitionWorkspace<Metric> ws;
+    SeedRandom random(seed);
+    SeedingGoal goal;
+    goal.proxyCount = k;
+    SeedRandomly(mesh, metric, g, s, goal, random, ws);
+    LloydIteration(mesh, metric, s, ws);
+    return s;
+}
+
+}  // namespace
+
+TEST(PartitionFlood, QueuePopsInErrorFaceRegionOrder)
+{
+    // Rising errors with dips below the last pop, exact ties, and zeros: what floods produce.
+    vsa_test::TestRandom random(3);
+    FloodQueue queue;
+    ReferenceQueue reference;
+    queue.Clear();
+    double level = 0;
+    int pops = 0;
+    for (int step = 0; step < 20000; ++step) {
+        if (random.Uniform() < 0.55 || reference.empty()) {
+            const double u = random.Uniform();
+            double error = u < 0.1 ? 0.0 : u < 0.3 ? level : u < 0.5 ? level * random.Uniform() : level + random.Uniform();
+            if (u > 0.9) error = std::ldexp(random.Uniform(), -int(60 * random.Uniform()));  // tiny, many binades
+            const int face = int(random.Uniform() * 50), region = int(random.Uniform() * 5);
+            queue.Push({error, face, region});
+            reference.emplace(error, face, region);
+        } else {
+            const FloodQueue::Candidate c = queue.Pop();
+            const Key expected = reference.top();
+            reference.pop();
+            ASSERT_EQ(std::make_tuple(c.error, c.face, c.region), expected) << "at pop " << pops;
+            level = c.error;
+            ++pops;
+        }
+        ASSERT_EQ(queue.Empty(), reference.empty());
+    }
+    EXPECT_GT(pops, 5000);
+}
+
+TEST(PartitionFlood, LabelsAreTheTextbookFloodsOnARealMesh)
+{
+    const IndexedMesh im = vsa_test::LoadCgalMesh("fandisk.off");
+    for (bool l2 : {false, true}) {
+        const FaceGeometry g = ComputeFaceGeometry(im, l2);
+        const auto check = [&](const auto &metric) {
+            const RegionState s = SeededState(im, metric, g, 60, 11);
+            std::vector<int> label(im.FaceCount(), -1);
+            PartitionWorkspace<std::decay_t<decltype(metric)>> ws;
+            EXPECT_EQ(FloodRegions(im, metric, s.partition.proxies, s.seeds, label, ws), 0);
+            EXPECT_EQ(label, TextbookFlood(im, metric, s.partition.proxies, s.seeds));
+            EXPECT_EQ(vsa_test::CheckPartition(im, label, 60), "");
+        };
+        if (l2) check(L2Metric(g));
+        else check(L21Metric(g));
+    }
+}
+
+TEST(PartitionFlood, TiesFollowTheTextbookOrderOnACube)
+{
+    // On a cube whole sides tie at exactly the same error: the order (error, face, region) decides.
+    vsa_test::TMesh m;
+    vsa_test::MakeTessellatedCube(m, 6);
+    const IndexedMesh im = BuildIndexedMesh(m);
+    const FaceGeometry g = ComputeFaceGeometry(im, false);
+    const L21Metric metric(g);
+    const std::vector<int> seeds = {0, 100, 150, 400};
+    std::vector<Proxy> proxies;
+    for (int f : seeds) proxies.push_back(FitFace(metric, g, f));
+    std::vector<int> label(im.FaceCount(), -1);
+    PartitionWorkspace<L21Metric> ws;
+    FloodRegions(im, metric, proxies, seeds, label, ws);
+    EXPECT_EQ(label, TextbookFlood(im, metric, proxies, seeds));
+}
+
+TEST(PartitionFlood, LabelledFacesAreWalls)
+{
+    // Re-flood only the faces of two regions: the others keep their labels and are not crossed.
+    const IndexedMesh im = vsa_test::LoadCgalMesh("fandisk.off");
+    const FaceGeometry g = ComputeFaceGeometry(im, false);
+    const L21Metric metric(g);
+    const RegionState s = SeededState(im, metric, g, 30, 5);
+    std::vector<int> label = s.partition.faceRegion;
+    std::vector<int> seeds(30, -1);
+    for (int r : {3, 4}) seeds[r] = s.seeds[r];
+    for (int &r : label)
+        if (r == 3 || r == 4) r = -1;
+    PartitionWorkspace<L21Metric> ws;
+    const int unreached = FloodRegions(im, metric, s.partition.proxies, seeds, label, ws);
+    int freed = 0;
+    for (int f = 0; f < im.FaceCount(); ++f) {
+        const int before = s.partition.faceRegion[f];
+        if (before == 3 || before == 4) {
+            ++freed;
+            EXPECT_TRUE(label[f] == 3 || label[f] == 4 || label[f] == -1);
+        } else {
+            EXPECT_EQ(label[f], before);
+        }
+    }
+    EXPECT_EQ(unreached, int(std::count(label.begin(), label.end(), -1)));
+    EXPECT_GT(freed, 0);
+}
+
+TEST(PartitionFlood, GrowRegionStealsOnlyWhatItFitsBetterAndNeverASeed)
+{
+    const IndexedMesh im = vsa_test::LoadCgalMesh("fandisk.off");
+    const FaceGeometry g = ComputeFaceGeometry(im, false);
+    const L21Metric metric(g);
+    RegionState s = SeededState(im, metric, g, 20, 9);
+    const RegionState before = s;
+    int worst = -1;
+    for (int f = 0; f < im.FaceCount(); ++f)
+        if (!s.IsSeed(f) && (worst < 0 || s.faceError[f] > s.faceError[worst])) worst = f;
+    PartitionWorkspace<L21Metric> ws;
+    const int added = GrowRegion(im, metric, g, s, worst, ws);
+    EXPECT_EQ(added, 20);
+    EXPECT_EQ(s.seeds[added], worst);
+    EXPECT_EQ(ws.grown.front(), worst);
+    for (int f = 0; f < im.FaceCount(); ++f) {
+        if (s.partition.faceRegion[f] != added) {
+            EXPECT_EQ(s.partition.faceRegion[f], before.partition.faceRegion[f]);
+            continue;
+        }
+        EXPECT_FALSE(before.IsSeed(f));
+        if (f != worst) {
+            EXPECT_LT(s.faceError[f], before.faceError[f]);
+        }
+        EXPECT_EQ(s.faceError[f], metric.Error(f, s.partition.proxies[added]));
+    }
+    // The energies follow the faces that moved, and the total can only fall.
+    double total = 0;
+    for (int f = 0; f < im.FaceCount(); ++f) total += s.faceError[f];
+    EXPECT_NEAR(s.Energy(), total, 1e-12 * total);
+    EXPECT_LT(s.Energy(), before.Energy());
+}

@@ -1,0 +1,122 @@
+// Shared by the partitioning tests: more meshes with known answers, and checks on partitions.
+#ifndef VSA_PARTITION_TEST_HELPERS_H
+#define VSA_PARTITION_TEST_HELPERS_H
+
+#include "test_meshes.h"
+
+#include <vsa/indexed_mesh.h>
+#include <vsa/proxy.h>
+
+#include <vcg/complex/append.h>
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace vsa_test {
+
+/// An n x n grid of quads (2 n^2 triangles) spanning origin + [0,1] u + [0,1] v: an open
+/// planar patch with a border, oriented along u x v.
+inline void MakePlanarGrid(TMesh &m, int n, const vcg::Point3f &origin, const vcg::Point3f &u, const vcg::Point3f &v)
+{
+    std::vector<vcg::Point3f> coords;
+    std::vector<vcg::Point3i> tris;
+    for (int j = 0; j <= n; ++j)
+        for (int i = 0; i <= n; ++i) coords.push_back(origin + u * (float(i) / n) + v * (float(j) / n));
+    const auto at = [n](int i, int j) { return j * (n + 1) + i; };
+    for (int j = 0; j < n; ++j)
+        for (int i = 0; i < n; ++i) {
+            tris.emplace_back(at(i, j), at(i + 1, j), at(i + 1, j + 1));
+            tris.emplace_back(at(i, j), at(i + 1, j + 1), at(i, j + 1));
+        }
+    BuildFromLists(m, coords, tris);
+}
+
+/// `count` tessellated cubes (MakeTessellatedCube(n)) side by side along x, 3 apart.
+inline void MakeCubeRow(TMesh &m, int count, int n)
+{
+    m.Clear();
+    for (int c = 0; c < count; ++c) {
+        TMesh cube;
+        MakeTessellatedCube(cube, n);
+        for (auto &v : cube.vert) v.P()[0] += 3.0f * float(c);
+        vcg::tri::Append<TMesh, TMesh>::Mesh(m, cube);
+    }
+    vcg::tri::UpdateBounding<TMesh>::Box(m);
+}
+
+/// Loads one of CGAL's sample meshes; the test fails if it cannot be read.
+inline vcg::tri::vsa::IndexedMesh LoadCgalMesh(const std::string &name)
+{
+    TMesh m;
+    std::string error;
+    if (!LoadMesh(m, CgalMesh(name), &error)) throw std::runtime_error("cannot load " + name + ": " + error);
+    return vcg::tri::vsa::BuildIndexedMesh(m);
+}
+
+/// Side of the tessellated cube a face lies on, 0..5, from its vertices' shared coordinate.
+inline int CubeSide(const vcg::tri::vsa::IndexedMesh &im, int face)
+{
+    const auto &t = im.faces[face];
+    for (int axis = 0; axis < 3; ++axis) {
+        const double c = im.positions[t[0]][axis];
+        if (std::abs(std::abs(c) - 1) < 1e-6 && c == im.positions[t[1]][axis] && c == im.positions[t[2]][axis])
+            return 2 * axis + (c > 0);
+    }
+    return -1;
+}
+
+/// Every face has a region in [0, regionCount), every region is non-empty and connected
+/// through IndexedMesh::neighbors. Returns an empty string, or what is wrong.
+inline std::string CheckPartition(const vcg::tri::vsa::IndexedMesh &im, const std::vector<int> &faceRegion,
+                                  int regionCount)
+{
+    if (int(faceRegion.size()) != im.FaceCount()) return "faceRegion has the wrong size";
+    std::vector<int> firstFace(regionCount, -1);
+    for (int f = 0; f < im.FaceCount(); ++f) {
+        const int r = faceRegion[f];
+        if (r < 0 || r >= regionCount) return "face " + std::to_string(f) + " has no valid region";
+        if (firstFace[r] < 0) firstFace[r] = f;
+    }
+    std::vector<char> reached(im.FaceCount(), 0);
+    for (int r = 0; r < regionCount; ++r) {
+        if (firstFace[r] < 0) return "region " + std::to_string(r) + " is empty";
+        std::vector<int> stack{firstFace[r]};
+        reached[firstFace[r]] = 1;
+        while (!stack.empty()) {
+            const int f = stack.back();
+            stack.pop_back();
+            for (int g : im.neighbors[f])
+                if (g >= 0 && !reached[g] && faceRegion[g] == r) {
+                    reached[g] = 1;
+                    stack.push_back(g);
+                }
+        }
+    }
+    for (int f = 0; f < im.FaceCount(); ++f)
+        if (!reached[f]) return "region " + std::to_string(faceRegion[f]) + " is not connected";
+    return {};
+}
+
+/// Doubles in [0, 1) from a fixed generator, for reproducible random geometry.
+class TestRandom
+{
+public:
+    explicit TestRandom(uint64_t seed) : state_(seed) {}
+    double Uniform() { return double(Next() >> 11) * (1.0 / 9007199254740992.0); }
+    double Uniform(double lo, double hi) { return lo + (hi - lo) * Uniform(); }
+
+private:
+    uint64_t Next()  // splitmix64
+    {
+        uint64_t z = (state_ += 0x9e3779b97f4a7c15ull);
+        z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
+        z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
+        return z ^ (z >> 31);
+    }
+    uint64_t state_;
+};
+
+}  // namespace vsa_test
+
+#endif  // VSA_PARTITION_TEST_HELPERS_H

@@ -1,0 +1,573 @@
+// Variational Shape Approximation for vcglib — the partitioning half: parameters, the stepwise
+// Approximation class (seed, Lloyd iterations, region operations) and a one-shot function.
+// SPDX-License-Identifier: GPL-3.0-or-later
+#ifndef VSA_APPROXIMATION_H
+#define VSA_APPROXIMATION_H
+
+#include <vsa/face_geometry.h>
+#include <vsa/indexed_mesh.h>
+#include <vsa/metrics.h>
+#include <vsa/partition.h>
+#include <vsa/proxy.h>
+#include <vsa/seeding.h>
+
+#include <wrap/callback.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <type_traits>
+#include <utility>
+#include <vector>
+
+namespace vcg {
+namespace tri {
+namespace vsa {
+
+enum class MetricKind
+{
+    L21,  ///< normals: area * |n_f - N|^2, the paper's recommendation; captures anisotropy
+    L2,   ///< squared distance to the proxy plane, integrated over the face
+};
+
+struct ApproximationParam
+{
+    /// k, the number of proxies (regions). Raised to the number of connected components when
+    /// smaller, because a region cannot span two components; Messages() says so.
+    int proxyCount = 100;
+    /// > 0: ignore proxyCount and add proxies until the energy is at most targetError times the
+    /// energy of one proxy per component (so 0.01 = 1% of the coarsest approximation's error).
+    double targetError = 0;
+    MetricKind metric = MetricKind::L21;
+    SeedingMethod init = SeedingMethod::Hierarchical;
+    int maxIterations = 30;   ///< Lloyd iterations after seeding (at most)
+    double tolerance = 1e-4;  ///< stop once |E_prev - E| <= tolerance * E_prev
+    uint64_t randomSeed = 0;  ///< the same seed gives the same result, bit for bit
+    /// When the iterations converge, move the proxy whose merge with a neighbour costs least to
+    /// the worst region, and iterate again while that keeps lowering the energy.
+    bool teleport = false;
+    int relaxations = 2;  ///< Lloyd iterations settling new proxies during seeding and Split
+};
+
+/// What the partitioning produced; ok == false means nothing else is filled in but `error`.
+struct ApproximationResult
+{
+    bool ok = false;
+    std::string error;
+    Partition partition;               ///< per-face region and per-region proxy
+    std::vector<double> regionEnergy;  ///< per region
+    double energy = 0;                 ///< sum of regionEnergy
+    double referenceEnergy = 0;        ///< energy of one proxy per connected component
+    std::vector<double> energyPerIteration;
+    int iterations = 0;                ///< Lloyd iterations run after seeding
+    int proxyCount = 0;                ///< proxies actually used
+    std::vector<std::string> messages; ///< what was adjusted or decided, for the user's log
+};
+
+/// Variational Shape Approximation's partitioning, step by step (CGAL's Variational_shape_
+/// approximation without the meshing): Initialize() seeds, Run() iterates Lloyd's partition and
+/// fit, AddProxy/Merge/Split/Teleport edit the regions; the accessors read the state.
+///
+/// Error policy: every problem (bad parameter, unusable mesh, a call out of order, an invalid
+/// region index) throws std::invalid_argument or std::logic_error with a message meant for the
+/// user, before anything changes; the state is never left half-updated. The one-shot
+/// Approximate() never throws: it returns the message in ApproximationResult::error.
+///
+/// Invariants: every face belongs to exactly one region, every region is non-empty and its
+/// seed (the face its proxy fits best) is in it. After Initialize() and Run() every region is
+/// connected; AddProxy() and Teleport() grow the new region locally (no full flood), so a
+/// region that lost a band of faces may be in pieces until the next Run().
+class Approximation
+{
+    // Defined first: the members below deduce their return types through it.
+    /// Calls `f` with the metric chosen in Param and its workspace; hot loops are instantiated
+    /// for each metric.
+    template <class F>
+    decltype(auto) WithMetric(F &&f)
+    {
+        if (param_.metric == MetricKind::L2) return f(L2Metric(geometry_), l2Workspace_);
+        return f(L21Metric(geometry_), l21Workspace_);
+    }
+
+public:
+    using Param = ApproximationParam;
+
+    explicit Approximation(IndexedMesh mesh, const Param &param = Param())
+        : mesh_(std::move(mesh)), param_(param)
+    {
+        CheckParam(param_);
+        CheckMesh(mesh_);
+        targetCount_ = param_.proxyCount;
+        if (param_.targetError == 0) {
+            if (param_.proxyCount < 1)
+                throw std::invalid_argument("The number of proxies must be at least 1 (got " +
+                                            std::to_string(param_.proxyCount) + ").");
+            if (param_.proxyCount > mesh_.FaceCount())
+                throw std::invalid_argument("The number of proxies (" + std::to_string(param_.proxyCount) +
+                                            ") exceeds the number of faces (" + std::to_string(mesh_.FaceCount()) +
+                                            "): each proxy needs at least one face.");
+            if (param_.proxyCount < mesh_.componentCount) {
+                targetCount_ = mesh_.componentCount;
+                notes_.push_back("Number of proxies raised from " + std::to_string(param_.proxyCount) + " to " +
+                                 std::to_string(mesh_.componentCount) +
+                                 ": the mesh has that many connected components and each needs its own proxy.");
+            }
+        }
+        geometry_ = ComputeFaceGeometry(mesh_, param_.metric == MetricKind::L2);
+        referenceEnergy_ = WithMetric([&](const auto &metric, auto &) { return OneProxyPerComponentEnergy(metric); });
+    }
+
+    /// Builds the flat snapshot of a vcg triangle mesh (live faces and vertices only).
+    template <class MeshType,
+              class = std::enable_if_t<!std::is_same<std::decay_t<MeshType>, IndexedMesh>::value>>
+    explicit Approximation(const MeshType &m, const Param &param = Param()) : Approximation(Snapshot(m), param)
+    {
+    }
+
+    /// Places the initial proxies (Param::init), as many as Param::proxyCount or as the target
+    /// error needs. Starts over when called again.
+    void Initialize(CallBackPos *cb = nullptr)
+    {
+        messages_ = notes_;
+        history_.clear();
+        labelHashes_.clear();
+        iterations_ = 0;
+        SeedingGoal goal;
+        goal.relaxations = param_.relaxations;
+        goal.proxyCount = targetCount_;
+        if (param_.targetError > 0) {
+            goal.targetEnergy = param_.targetError * referenceEnergy_;
+            goal.proxyCount = goal.targetEnergy > 0 ? mesh_.FaceCount() : mesh_.componentCount;
+        }
+        SeedRandom random(param_.randomSeed);
+        WithMetric([&](const auto &metric, auto &ws) {
+            SeedRegions(param_.init, mesh_, metric, geometry_, state_, goal, random, ws, cb);
+        });
+        if (param_.targetError == 0 && ProxyCount() < goal.proxyCount)
+            messages_.push_back("Only " + std::to_string(ProxyCount()) + " of " + std::to_string(goal.proxyCount) +
+                                " proxies could be placed.");
+        if (param_.targetError > 0) {
+            std::ostringstream s;
+            s << "Target error " << param_.targetError << (Energy() <= goal.targetEnergy ? " reached" : " not reached")
+              << " with " << ProxyCount() << " proxies (energy " << Energy() / std::max(referenceEnergy_, 1e-300)
+              << " of the one-proxy energy).";
+            messages_.push_back(s.str());
+        }
+        initialized_ = true;
+        StartTracking(true);
+    }
+
+    /// Runs Lloyd iterations (flood, then fit) until the relative energy change is at most
+    /// Param::tolerance, the partition repeats, or `maxIterations` were run; with
+    /// Param::teleport, converging triggers a teleport while that keeps lowering the energy.
+    /// Leaves the best partition seen since the last change of proxy count as the current one.
+    /// Returns the number of iterations run.
+    int Run(int maxIterations, CallBackPos *cb = nullptr)
+    {
+        RequireInitialized("Run");
+        if (maxIterations < 0) throw std::invalid_argument("The number of iterations cannot be negative.");
+        int done = 0;
+        int teleports = 0;
+        double previous = Energy();
+        double bestAtLastTeleport = std::numeric_limits<double>::infinity();
+        std::string stop = "stopped after the maximum of " + std::to_string(maxIterations) + " iterations";
+        while (done < maxIterations) {
+            WithMetric([&](const auto &metric, auto &ws) { LloydIteration(mesh_, metric, state_, ws); });
+            ++done;
+            ++iterations_;
+            const double energy = Energy();
+            history_.push_back(energy);
+            if (!hasBest_ || energy < best_.Energy()) KeepAsBest();
+            const uint64_t hash = HashLabels();
+            const bool cycled = std::find(labelHashes_.begin(), labelHashes_.end(), hash) != labelHashes_.end();
+            labelHashes_.push_back(hash);
+            const bool converged = energy == 0 || std::abs(previous - energy) <= param_.tolerance * previous;
+            previous = energy;
+            if (cb) cb(maxIterations > 0 ? 100 * done / maxIterations : 100, "VSA: Lloyd iterations");
+            if (!cycled && !converged) continue;
+            if (param_.teleport && done < maxIterations && best_.Energy() < bestAtLastTeleport) {
+                bestAtLastTeleport = best_.Energy();
+                if (WithMetric([&](const auto &metric, auto &ws) { return TeleportWith(metric, ws); })) {
+                    ++teleports;
+                    previous = Energy();
+                    continue;
+                }
+            }
+            stop = cycled ? "stopped on a cycle after " + std::to_string(done) + " iterations"
+                          : "converged after " + std::to_string(done) + " iterations";
+            break;
+        }
+        if (hasBest_) state_ = best_;
+        std::ostringstream s;
+        s << "Lloyd iterations " << stop;
+        if (teleports) s << ", with " << teleports << " teleport(s)";
+        s << "; energy " << Energy() << ".";
+        messages_.push_back(s.str());
+        return done;
+    }
+
+    /// Adds a proxy at the face with the largest error, growing its region locally and refitting
+    /// the regions it took faces from (the others wait for the next Run). Returns the new
+    /// region's index (the last).
+    int AddProxy()
+    {
+        RequireInitialized("AddProxy");
+        if (ProxyCount() >= mesh_.FaceCount())
+            throw std::logic_error("Cannot add a proxy: every face already has its own.");
+        const int region = WithMetric([&](const auto &metric, auto &ws) { return AddRegionAt(metric, ws, WorstFace(-1)); });
+        StartTracking(false);
+        return region;
+    }
+
+    /// Merges two adjacent regions into the lower index, refits it, and renumbers the regions
+    /// above the higher index down by one. Returns the change of energy (>= 0 up to rounding).
+    double Merge(int regionA, int regionB)
+    {
+        RequireInitialized("Merge");
+        RequireRegion(regionA);
+        RequireRegion(regionB);
+        if (regionA == regionB) throw std::invalid_argument("Cannot merge a region with itself.");
+        const int keep = std::min(regionA, regionB), remove = std::max(regionA, regionB);
+        if (!AreAdjacent(keep, remove))
+            throw std::invalid_argument("Regions " + std::to_string(keep) + " and " + std::to_string(remove) +
+                                        " are not adjacent.");
+        const double before = Energy();
+        WithMetric([&](const auto &metric, auto &) { MergeRegions(metric, keep, remove); });
+        StartTracking(false);
+        return Energy() - before;
+    }
+
+    /// Splits a region in two: a new proxy at its worst face, then Param::relaxations Lloyd
+    /// iterations confined to the region's faces. Returns the new region's index (the last).
+    int Split(int region)
+    {
+        RequireInitialized("Split");
+        RequireRegion(region);
+        const auto &faceRegion = state_.partition.faceRegion;
+        if (std::count(faceRegion.begin(), faceRegion.end(), region) < 2)
+            throw std::invalid_argument("Region " + std::to_string(region) + " has a single face: cannot split it.");
+        WithMetric([&](const auto &metric, auto &ws) { SplitRegion(metric, ws, region); });
+        StartTracking(false);
+        return ProxyCount() - 1;
+    }
+
+    /// The paper's region teleportation: merges the adjacent pair whose merge costs least and
+    /// re-seeds the freed proxy at the worst face of the worst region, when the merge costs
+    /// less than half the worst region's energy (the paper's estimate of what splitting it
+    /// gains). Returns whether it teleported. Run() afterwards; it keeps the better result.
+    bool Teleport()
+    {
+        RequireInitialized("Teleport");
+        return WithMetric([&](const auto &metric, auto &ws) { return TeleportWith(metric, ws); });
+    }
+
+    const IndexedMesh &Mesh() const { return mesh_; }
+    const Param &Parameters() const { return param_; }
+    bool IsInitialized() const { return initialized_; }
+    const Partition &CurrentPartition() const { return state_.partition; }
+    int ProxyCount() const { return state_.RegionCount(); }
+    double Energy() const { return state_.Energy(); }
+    /// Energy of one proxy per connected component: what Param::targetError is relative to.
+    double ReferenceEnergy() const { return referenceEnergy_; }
+    const std::vector<double> &RegionEnergies() const { return state_.regionEnergy; }
+    const std::vector<int> &SeedFaces() const { return state_.seeds; }
+    const std::vector<double> &FaceErrors() const { return state_.faceError; }
+    /// Energy after each Lloyd iteration run since Initialize().
+    const std::vector<double> &EnergyHistory() const { return history_; }
+    int IterationsRun() const { return iterations_; }
+    const std::vector<std::string> &Messages() const { return initialized_ ? messages_ : notes_; }
+
+    ApproximationResult Result() const
+    {
+        ApproximationResult r;
+        r.ok = initialized_;
+        if (!initialized_) r.error = "The approximation was not initialized.";
+        r.partition = state_.partition;
+        r.regionEnergy = state_.regionEnergy;
+        r.energy = Energy();
+        r.referenceEnergy = referenceEnergy_;
+        r.energyPerIteration = history_;
+        r.iterations = iterations_;
+        r.proxyCount = ProxyCount();
+        r.messages = Messages();
+        return r;
+    }
+
+private:
+    template <class MeshType>
+    static IndexedMesh Snapshot(const MeshType &m)
+    {
+        RequireTriangularMesh(m);
+        return BuildIndexedMesh(m);
+    }
+
+    static void CheckParam(const Param &p)
+    {
+        if (!(p.targetError >= 0) || !std::isfinite(p.targetError))
+            throw std::invalid_argument("The target error must be a finite number >= 0 (0 = use the number of proxies).");
+        if (p.maxIterations < 0) throw std::invalid_argument("The number of iterations cannot be negative.");
+        if (!(p.tolerance >= 0) || !std::isfinite(p.tolerance))
+            throw std::invalid_argument("The convergence tolerance must be a finite number >= 0.");
+        if (p.relaxations < 0) throw std::invalid_argument("The number of relaxations cannot be negative.");
+        if (p.metric != MetricKind::L21 && p.metric != MetricKind::L2)
+            throw std::invalid_argument("Unknown metric.");
+        if (p.init != SeedingMethod::Random && p.init != SeedingMethod::Farthest && p.init != SeedingMethod::Hierarchical)
+            throw std::invalid_argument("Unknown initialization method.");
+    }
+
+    static void CheckMesh(const IndexedMesh &m)
+    {
+        if (m.FaceCount() == 0) throw std::invalid_argument("The mesh has no faces: VSA partitions triangles.");
+        const auto finite = [](const Point3d &p) {
+            return std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]);
+        };
+        const auto bad = std::count_if(m.positions.begin(), m.positions.end(), [&](const Point3d &p) { return !finite(p); });
+        if (bad > 0)
+            throw std::invalid_argument(std::to_string(bad) +
+                                        " vertices have NaN or infinite coordinates: remove them first.");
+    }
+
+    void RequireInitialized(const char *what) const
+    {
+        if (!initialized_) throw std::logic_error(std::string("Call Initialize() before ") + what + "().");
+    }
+
+    void RequireRegion(int region) const
+    {
+        if (region < 0 || region >= ProxyCount())
+            throw std::invalid_argument("No region " + std::to_string(region) + " (there are " +
+                                        std::to_string(ProxyCount()) + ").");
+    }
+
+    template <class Metric>
+    double OneProxyPerComponentEnergy(const Metric &metric) const
+    {
+        std::vector<typename Metric::Moments> moments;
+        std::vector<Proxy> firstFace(mesh_.componentCount);
+        std::vector<bool> seen(mesh_.componentCount, false);
+        for (int f = 0; f < mesh_.FaceCount(); ++f) {
+            const int c = mesh_.component[f];
+            if (!seen[c]) {
+                seen[c] = true;
+                firstFace[c] = FitFace(metric, geometry_, f);
+            }
+        }
+        for (int c = 0; c < mesh_.componentCount; ++c) moments.push_back(metric.EmptyMoments(firstFace[c].point));
+        for (int f = 0; f < mesh_.FaceCount(); ++f) metric.Add(moments[mesh_.component[f]], f);
+        double energy = 0;
+        for (int c = 0; c < mesh_.componentCount; ++c)
+            energy += metric.Energy(moments[c], metric.Fit(moments[c], firstFace[c]));
+        return energy;
+    }
+
+    /// Compares partitions afresh: after a change of proxy count, earlier ones do not compare.
+    /// Only flooded partitions (seeding's and Lloyd's) become the best, for their regions are
+    /// connected; AddProxy may leave a region in pieces. The current labels do not count for
+    /// cycles: their proxies may not be fitted yet, so the next flood may well repeat them.
+    void StartTracking(bool currentIsFlooded)
+    {
+        labelHashes_.clear();
+        hasBest_ = false;
+        if (currentIsFlooded) KeepAsBest();
+    }
+
+    void KeepAsBest()
+    {
+        best_ = state_;
+        hasBest_ = true;
+    }
+
+    /// FNV-1a over the labels: two equal hashes mean the Lloyd loop came back to a partition.
+    uint64_t HashLabels() const
+    {
+        uint64_t h = 14695981039346656037ull;
+        for (int r : state_.partition.faceRegion) {
+            h ^= uint64_t(uint32_t(r));
+            h *= 1099511628211ull;
+        }
+        return h;
+    }
+
+    /// The non-seed face with the largest error, in `region` or anywhere (-1); ties: lowest index.
+    int WorstFace(int region) const
+    {
+        int worst = -1;
+        for (int f = 0; f < mesh_.FaceCount(); ++f) {
+            if (region >= 0 && state_.partition.faceRegion[f] != region) continue;
+            if (state_.IsSeed(f)) continue;
+            if (worst < 0 || state_.faceError[f] > state_.faceError[worst]) worst = f;
+        }
+        return worst;
+    }
+
+    bool AreAdjacent(int a, int b) const
+    {
+        const auto &faceRegion = state_.partition.faceRegion;
+        for (int f = 0; f < mesh_.FaceCount(); ++f) {
+            if (faceRegion[f] != a) continue;
+            for (int g : mesh_.neighbors[f])
+                if (g >= 0 && faceRegion[g] == b) return true;
+        }
+        return false;
+    }
+
+    /// Grows a new region at `face`, then refits it and the regions it took faces from: a
+    /// region whose seed kept it alive on the far side of the new one moves its seed back.
+    template <class Metric>
+    int AddRegionAt(const Metric &metric, PartitionWorkspace<Metric> &ws, int face)
+    {
+        const int region = GrowRegion(mesh_, metric, geometry_, state_, face, ws);
+        std::vector<char> refit(ProxyCount(), 0);
+        refit[region] = 1;
+        for (int r : ws.grownFrom) refit[r] = 1;
+        FitRegions(metric, state_, refit);
+        return region;
+    }
+
+    template <class Metric>
+    void MergeRegions(const Metric &metric, int keep, int remove)
+    {
+        auto &faceRegion = state_.partition.faceRegion;
+        for (int &r : faceRegion) {
+            if (r == remove) r = keep;
+            else if (r > remove) --r;
+        }
+        state_.partition.proxies.erase(state_.partition.proxies.begin() + remove);
+        state_.seeds.erase(state_.seeds.begin() + remove);
+        state_.regionEnergy.erase(state_.regionEnergy.begin() + remove);
+        std::vector<char> only(ProxyCount(), 0);
+        only[keep] = 1;
+        FitRegions(metric, state_, only);
+    }
+
+    template <class Metric>
+    void SplitRegion(const Metric &metric, PartitionWorkspace<Metric> &ws, int region)
+    {
+        auto &faceRegion = state_.partition.faceRegion;
+        std::vector<int> faces;
+        for (int f = 0; f < mesh_.FaceCount(); ++f)
+            if (faceRegion[f] == region) faces.push_back(f);
+        const int seed = WorstFace(region);
+        const int added = ProxyCount();
+        state_.partition.proxies.push_back(FitFace(metric, geometry_, seed));
+        state_.seeds.push_back(seed);
+        state_.regionEnergy.push_back(0);
+        std::vector<char> only(ProxyCount(), 0);
+        only[region] = only[added] = 1;
+        std::vector<int> floodSeeds(ProxyCount(), -1);
+        for (int i = 0; i < std::max(1, param_.relaxations); ++i) {
+            for (int f : faces) faceRegion[f] = -1;
+            floodSeeds[region] = state_.seeds[region];
+            floodSeeds[added] = state_.seeds[added];
+            FloodRegions(mesh_, metric, state_.partition.proxies, floodSeeds, faceRegion, ws);
+            for (int f : faces)  // pieces of a region left in pieces by AddProxy: back to it
+                if (faceRegion[f] < 0) faceRegion[f] = region;
+            FitRegions(metric, state_, only);
+        }
+    }
+
+    template <class Metric>
+    bool TeleportWith(const Metric &metric, PartitionWorkspace<Metric> &ws)
+    {
+        const int regionCount = ProxyCount();
+        if (regionCount < 3) return false;  // the worst region and a pair to merge besides it
+        const auto &faceRegion = state_.partition.faceRegion;
+        const auto &energy = state_.regionEnergy;
+        const int worst = int(std::max_element(energy.begin(), energy.end()) - energy.begin());
+        if (WorstFace(worst) < 0) return false;  // a single face: nothing to split
+
+        std::vector<typename Metric::Moments> moments;
+        for (int r = 0; r < regionCount; ++r) moments.push_back(metric.EmptyMoments(state_.partition.proxies[r].point));
+        std::vector<std::pair<int, int>> pairs;
+        for (int f = 0; f < mesh_.FaceCount(); ++f) {
+            metric.Add(moments[faceRegion[f]], f);
+            for (int g : mesh_.neighbors[f])
+                if (g > f && faceRegion[g] != faceRegion[f])
+                    pairs.emplace_back(std::min(faceRegion[f], faceRegion[g]), std::max(faceRegion[f], faceRegion[g]));
+        }
+        std::sort(pairs.begin(), pairs.end());
+        pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
+        double bestCost = std::numeric_limits<double>::infinity();
+        std::pair<int, int> best{-1, -1};
+        for (const auto &p : pairs) {
+            if (p.first == worst || p.second == worst) continue;
+            typename Metric::Moments merged = moments[p.first];
+            metric.Add(merged, moments[p.second]);
+            const Proxy fitted = metric.Fit(merged, state_.partition.proxies[p.first]);
+            const double cost = metric.Energy(merged, fitted) - energy[p.first] - energy[p.second];
+            if (cost < bestCost) {
+                bestCost = cost;
+                best = p;
+            }
+        }
+        if (best.first < 0 || !(bestCost < 0.5 * energy[worst])) return false;
+        MergeRegions(metric, best.first, best.second);
+        const int target = worst > best.second ? worst - 1 : worst;
+        AddRegionAt(metric, ws, WorstFace(target));
+        return true;
+    }
+
+    IndexedMesh mesh_;
+    Param param_;
+    FaceGeometry geometry_;
+    int targetCount_ = 0;
+    double referenceEnergy_ = 0;
+    std::vector<std::string> notes_;     ///< from the constructor: kept across Initialize()
+    std::vector<std::string> messages_;
+    bool initialized_ = false;
+    RegionState state_;
+    RegionState best_;
+    bool hasBest_ = false;
+    std::vector<double> history_;
+    std::vector<uint64_t> labelHashes_;
+    int iterations_ = 0;
+    PartitionWorkspace<L21Metric> l21Workspace_;
+    PartitionWorkspace<L2Metric> l2Workspace_;
+};
+
+/// One shot: seeds, then runs Param::maxIterations Lloyd iterations at most. Never throws:
+/// on bad input or parameters, returns ok == false and the reason in `error`.
+inline ApproximationResult Approximate(IndexedMesh mesh, const ApproximationParam &param = ApproximationParam(),
+                                       CallBackPos *cb = nullptr)
+{
+    try {
+        Approximation approximation(std::move(mesh), param);
+        approximation.Initialize(cb);
+        approximation.Run(param.maxIterations, cb);
+        return approximation.Result();
+    } catch (const std::exception &e) {
+        ApproximationResult r;
+        r.error = e.what();
+        return r;
+    } catch (...) {
+        ApproximationResult r;
+        r.error = "Unknown error in the shape approximation.";
+        return r;
+    }
+}
+
+/// One shot on a vcg triangle mesh (live faces only; result indices follow IndexedMesh order,
+/// which is the order of the live faces in m.face).
+template <class MeshType, class = std::enable_if_t<!std::is_same<std::decay_t<MeshType>, IndexedMesh>::value>>
+ApproximationResult Approximate(const MeshType &m, const ApproximationParam &param = ApproximationParam(),
+                                CallBackPos *cb = nullptr)
+{
+    try {
+        RequireTriangularMesh(m);
+        return Approximate(BuildIndexedMesh(m), param, cb);
+    } catch (const std::exception &e) {
+        ApproximationResult r;
+        r.error = e.what();
+        return r;
+    }
+}
+
+}  // namespace vsa
+}  // namespace tri
+}  // namespace vcg
+
+#endif  // VSA_APPROXIMATION_H

@@ -1,0 +1,449 @@
+// Variational Shape Approximation for vcglib — the surface the meshing stage walks: an
+// oriented 2-manifold with boundary, its regions cut into topological discs ("cells"), and
+// the boundary loop of every cell. Anchors are chosen on these loops (anchors.h); the runs
+// of a loop between consecutive anchors are the boundary chains, and their end-to-end
+// segments the chords that the output mesh shares between neighbouring regions.
+// SPDX-License-Identifier: GPL-3.0-or-later
+#ifndef VSA_BOUNDARY_CHAINS_H
+#define VSA_BOUNDARY_CHAINS_H
+
+#include <vsa/indexed_mesh.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <deque>
+#include <numeric>
+#include <string>
+#include <vector>
+
+namespace vcg {
+namespace tri {
+namespace vsa {
+
+/// The partitioned input as an oriented 2-manifold with boundary, cut into disc cells.
+///
+/// Why cells: a region that is a disc has one boundary loop, and any triangulation of the
+/// anchor polygon of that loop is a disc; glued along shared chords, such discs give back
+/// the input's topology exactly. A region that is not a disc (a ring, a region with islands,
+/// a whole closed component, a region through a handle) is cut into several discs that keep
+/// the region's proxy; the cuts carry no dihedral angle, so they add no anchors beyond what
+/// the topology needs, and the output faces of all its cells still belong to the region.
+struct MeshingSurface
+{
+    std::vector<Point3d> positions;          ///< per vertex
+    std::vector<int> sourceVertex;           ///< vertex -> IndexedMesh vertex
+    std::vector<std::array<int, 3>> faces;   ///< in the input's orientation
+    std::vector<std::array<int, 3>> neighbors;  ///< face across edge i (faces[f][i] -> faces[f][i+1]), -1 on border
+    std::vector<int> sourceFace;             ///< face -> IndexedMesh face
+    std::vector<int> faceRegion;             ///< face -> region (partition label)
+    std::vector<int> faceCell;               ///< face -> cell
+    std::vector<int> cellRegion;             ///< cell -> region
+    std::vector<int> cellFaceOffset, cellFaces;      ///< faces of cell c: cellFaces[cellFaceOffset[c] .. c+1)
+    std::vector<int> vertexFaceOffset, vertexFaces;  ///< faces around vertex v, same layout
+    /// The boundary loop of each cell: its vertices in order, the cell on the left (the
+    /// loop runs along the input's half-edges). cellLoopOther[c][i] is the cell across the
+    /// loop edge loop[i] -> loop[i+1], or -1 where that edge is on the mesh border.
+    std::vector<std::vector<int>> cellLoop;
+    std::vector<std::vector<int>> cellLoopOther;
+    int regionCount = 0;
+
+    // What was done to the input to make it walkable.
+    int ignoredFaces = 0;       ///< faces with a repeated vertex: no area, no edges
+    int splitVertices = 0;      ///< extra vertices made by splitting non-manifold vertices per fan
+    int nonDiscRegions = 0;     ///< connected pieces of regions that had to be cut into several cells
+
+    int VertexCount() const { return int(positions.size()); }
+    int FaceCount() const { return int(faces.size()); }
+    int CellCount() const { return int(cellRegion.size()); }
+};
+
+namespace detail {
+
+/// Index j of the edge of face g that runs opposite to edge i of face f (its twin).
+inline int TwinEdge(const MeshingSurface &s, int f, int i)
+{
+    const int g = s.neighbors[f][i], from = s.faces[f][(i + 1) % 3];
+    for (int j = 0; j < 3; ++j)
+        if (s.faces[g][j] == from) return j;
+    return -1;
+}
+
+/// Compressed lists: items of key k are list[offset[k] .. offset[k+1]).
+inline void BuildOffsets(const std::vector<int> &keyOfItem, int keyCount, std::vector<int> &offset,
+                         std::vector<int> &list)
+{
+    offset.assign(size_t(keyCount) + 1, 0);
+    for (int k : keyOfItem) ++offset[size_t(k) + 1];
+    std::partial_sum(offset.begin(), offset.end(), offset.begin());
+    list.resize(keyOfItem.size());
+    std::vector<int> fill(offset.begin(), offset.end() - 1);
+    for (size_t item = 0; item < keyOfItem.size(); ++item) list[fill[keyOfItem[item]]++] = int(item);
+}
+
+/// Gives every fan of faces around a vertex its own vertex, so that each vertex has one fan
+/// (a disc, or a half-disc on the border). Corners are joined across linked edges.
+inline void SplitVerticesPerFan(MeshingSurface &s)
+{
+    const int faceCount = s.FaceCount();
+    std::vector<int> cornerParent(size_t(faceCount) * 3);
+    std::iota(cornerParent.begin(), cornerParent.end(), 0);
+    for (int f = 0; f < faceCount; ++f)
+        for (int i = 0; i < 3; ++i) {
+            const int g = s.neighbors[f][i];
+            if (g < f) continue;  // each linked edge once; skips the border
+            const int j = TwinEdge(s, f, i);
+            Unite(cornerParent, 3 * f + i, 3 * g + (j + 1) % 3);
+            Unite(cornerParent, 3 * f + (i + 1) % 3, 3 * g + j);
+        }
+    std::vector<int> fanVertex(size_t(faceCount) * 3, -1);
+    std::vector<Point3d> positions;
+    std::vector<int> sourceVertex;
+    for (int c = 0; c < 3 * faceCount; ++c) {
+        const int root = FindRoot(cornerParent, c);
+        if (fanVertex[root] < 0) {
+            const int v = s.faces[c / 3][c % 3];
+            fanVertex[root] = int(positions.size());
+            positions.push_back(s.positions[v]);
+            sourceVertex.push_back(s.sourceVertex[v]);
+        }
+        s.faces[c / 3][c % 3] = fanVertex[root];
+    }
+    std::vector<char> used(s.positions.size(), 0);
+    int inputVerticesUsed = 0;
+    for (int v : sourceVertex) inputVerticesUsed += !used[v]++;
+    s.splitVertices = int(positions.size()) - inputVerticesUsed;
+    s.positions.swap(positions);
+    s.sourceVertex.swap(sourceVertex);
+}
+
+/// Grows disc cells over one connected set of faces of a region and assigns them cell ids.
+///
+/// A face joins a growing disc only if the disc stays a disc: it shares one edge with it and
+/// its third vertex is new to the disc, or it shares two edges (closing a notch). Growing one
+/// disc from one face covers any face set that is a disc; otherwise two discs grow in turn
+/// from two far-apart faces, so that a ring or a closed region is cut into halves instead of
+/// leaving a thin seam, and what neither covers is cut again the same way.
+class DiscGrower
+{
+public:
+    explicit DiscGrower(MeshingSurface &s)
+        : s_(s), inSlot_(s.positions.size(), 0), hop_(s.faces.size(), -1), queued_(s.faces.size(), 0)
+    {
+    }
+
+    /// Cuts `component` (faces of one region, connected through edges, none in a cell yet).
+    /// Returns whether it had to be cut into more than one cell.
+    bool Decompose(const std::vector<int> &component, int region)
+    {
+        std::vector<int> added = Grow({component.front()}, component);
+        if (added.size() == component.size()) {
+            Commit(added, region);
+            return false;
+        }
+        Undo(added);
+        std::vector<std::vector<int>> pending = {component};
+        while (!pending.empty()) {
+            const std::vector<int> piece = std::move(pending.back());
+            pending.pop_back();
+            const int first = FarthestFace(piece, piece.front());
+            const int second = FarthestFace(piece, first);
+            std::vector<int> seeds = {first};
+            if (second != first) seeds.push_back(second);
+            for (const std::vector<int> &disc : GrowSeveral(seeds, piece)) Commit(disc, region);
+            for (std::vector<int> &rest : UnassignedComponents(piece)) pending.push_back(std::move(rest));
+        }
+        return true;
+    }
+
+private:
+    MeshingSurface &s_;
+    std::vector<unsigned char> inSlot_;  ///< per vertex: bit b set when in the disc growing in slot b
+    std::vector<int> hop_;               ///< scratch for breadth-first distances
+    std::vector<char> queued_;           ///< scratch: face allowed in the current growth
+    std::vector<int> slotOfFace_;        ///< per face with faceCell == kGrowing: its slot
+
+    bool Allowed(int f) const { return f >= 0 && queued_[f] && s_.faceCell[f] == kFree; }
+
+    static constexpr int kFree = -1;
+    static constexpr int kGrowing = -2;
+
+    bool CanJoin(int f, int slot) const
+    {
+        int sharedEdges = 0, lastShared = -1;
+        for (int i = 0; i < 3; ++i) {
+            const int g = s_.neighbors[f][i];
+            if (g >= 0 && s_.faceCell[g] == kGrowing && slotOfFace_[g] == slot) {
+                ++sharedEdges;
+                lastShared = i;
+            }
+        }
+        if (sharedEdges == 2) return true;
+        if (sharedEdges != 1) return false;  // 3 would close a sphere; 0 is not adjacent
+        const int apex = s_.faces[f][(lastShared + 2) % 3];
+        return !(inSlot_[apex] & (1u << slot));
+    }
+
+    void Join(int f, int slot, std::vector<int> &disc)
+    {
+        s_.faceCell[f] = kGrowing;
+        slotOfFace_[f] = slot;
+        for (int v : s_.faces[f]) inSlot_[v] |= (1u << slot);
+        disc.push_back(f);
+    }
+
+    std::vector<int> Grow(const std::vector<int> &seeds, const std::vector<int> &piece)
+    {
+        return GrowSeveral(seeds, piece).front();
+    }
+
+    /// Grows one disc per seed (at most two), taking turns one face at a time, breadth first.
+    std::vector<std::vector<int>> GrowSeveral(const std::vector<int> &seeds, const std::vector<int> &piece)
+    {
+        if (slotOfFace_.size() != s_.faces.size()) slotOfFace_.assign(s_.faces.size(), -1);
+        for (int f : piece) queued_[f] = 1;
+        std::vector<std::vector<int>> discs(seeds.size());
+        std::vector<std::deque<int>> fronts(seeds.size());
+        for (size_t slot = 0; slot < seeds.size(); ++slot) {
+            Join(seeds[slot], int(slot), discs[slot]);
+            PushNeighbors(seeds[slot], fronts[slot]);
+        }
+        for (bool active = true; active;) {
+            active = false;
+            for (size_t slot = 0; slot < seeds.size(); ++slot) {
+                while (!fronts[slot].empty()) {
+                    const int f = fronts[slot].front();
+                    fronts[slot].pop_front();
+                    if (!Allowed(f) || !CanJoin(f, int(slot))) continue;  // retried when a neighbour joins
+                    Join(f, int(slot), discs[slot]);
+                    PushNeighbors(f, fronts[slot]);
+                    active = true;
+                    break;
+                }
+            }
+        }
+        for (int f : piece) queued_[f] = 0;
+        for (const std::vector<int> &disc : discs)
+            for (int f : disc)
+                for (int v : s_.faces[f]) inSlot_[v] = 0;
+        return discs;
+    }
+
+    void PushNeighbors(int f, std::deque<int> &front) const
+    {
+        for (int g : s_.neighbors[f])
+            if (Allowed(g)) front.push_back(g);
+    }
+
+    void Undo(const std::vector<int> &disc)
+    {
+        for (int f : disc) s_.faceCell[f] = kFree;
+    }
+
+    void Commit(const std::vector<int> &disc, int region)
+    {
+        const int cell = s_.CellCount();
+        for (int f : disc) s_.faceCell[f] = cell;
+        s_.cellRegion.push_back(region);
+    }
+
+    /// The face of `piece` farthest from `start` in edge hops (first one found on ties).
+    int FarthestFace(const std::vector<int> &piece, int start)
+    {
+        for (int f : piece) queued_[f] = 1;
+        std::vector<int> order = {start};
+        hop_[start] = 0;
+        for (size_t head = 0; head < order.size(); ++head)
+            for (int g : s_.neighbors[order[head]])
+                if (g >= 0 && queued_[g] && hop_[g] < 0 && s_.faceCell[g] == kFree) {
+                    hop_[g] = hop_[order[head]] + 1;
+                    order.push_back(g);
+                }
+        const int farthest = order.back();
+        for (int f : order) hop_[f] = -1;
+        for (int f : piece) queued_[f] = 0;
+        return farthest;
+    }
+
+    std::vector<std::vector<int>> UnassignedComponents(const std::vector<int> &piece)
+    {
+        std::vector<std::vector<int>> components;
+        for (int f : piece) queued_[f] = 1;
+        for (int start : piece) {
+            if (!queued_[start] || s_.faceCell[start] != kFree) continue;
+            std::vector<int> component = {start};
+            queued_[start] = 0;
+            for (size_t head = 0; head < component.size(); ++head)
+                for (int g : s_.neighbors[component[head]])
+                    if (g >= 0 && queued_[g] && s_.faceCell[g] == kFree) {
+                        queued_[g] = 0;
+                        component.push_back(g);
+                    }
+            std::sort(component.begin(), component.end());
+            components.push_back(std::move(component));
+        }
+        for (int f : piece) queued_[f] = 0;
+        return components;
+    }
+};
+
+/// Cuts every region into disc cells: region components in order of their lowest face.
+inline void BuildCells(MeshingSurface &s)
+{
+    const int faceCount = s.FaceCount();
+    s.faceCell.assign(faceCount, -1);
+    s.cellRegion.clear();
+    s.nonDiscRegions = 0;
+    DiscGrower grower(s);
+    std::vector<char> seen(faceCount, 0);
+    for (int start = 0; start < faceCount; ++start) {
+        if (seen[start]) continue;
+        const int region = s.faceRegion[start];
+        std::vector<int> component = {start};
+        seen[start] = 1;
+        for (size_t head = 0; head < component.size(); ++head)
+            for (int g : s.neighbors[component[head]])
+                if (g >= 0 && !seen[g] && s.faceRegion[g] == region) {
+                    seen[g] = 1;
+                    component.push_back(g);
+                }
+        std::sort(component.begin(), component.end());
+        s.nonDiscRegions += grower.Decompose(component, region);
+    }
+    BuildOffsets(s.faceCell, s.CellCount(), s.cellFaceOffset, s.cellFaces);
+}
+
+inline bool IsCellBoundary(const MeshingSurface &s, int f, int i)
+{
+    const int g = s.neighbors[f][i];
+    return g < 0 || s.faceCell[g] != s.faceCell[f];
+}
+
+/// Follows the boundary of every cell. A cell is a disc, so its boundary is one simple loop;
+/// anything else means a bug upstream and is reported, not papered over.
+inline bool TraceCellLoops(MeshingSurface &s, std::string &error)
+{
+    const int cellCount = s.CellCount();
+    s.cellLoop.assign(cellCount, {});
+    s.cellLoopOther.assign(cellCount, {});
+    std::vector<int> lastSeenInCell(s.positions.size(), -1);
+    for (int c = 0; c < cellCount; ++c) {
+        int startFace = -1, startEdge = -1, boundaryEdges = 0;
+        for (int k = s.cellFaceOffset[c]; k < s.cellFaceOffset[c + 1]; ++k) {
+            const int f = s.cellFaces[k];
+            for (int i = 0; i < 3; ++i)
+                if (IsCellBoundary(s, f, i)) {
+                    ++boundaryEdges;
+                    if (startFace < 0) startFace = f, startEdge = i;
+                }
+        }
+        if (startFace < 0) {
+            error = "internal error: a cell without boundary (cell " + std::to_string(c) + ")";
+            return false;
+        }
+        int f = startFace, i = startEdge;
+        do {
+            const int v = s.faces[f][i];
+            if (lastSeenInCell[v] == c || int(s.cellLoop[c].size()) >= boundaryEdges) {
+                error = "internal error: the boundary of cell " + std::to_string(c) + " is not a simple loop";
+                return false;
+            }
+            lastSeenInCell[v] = c;
+            s.cellLoop[c].push_back(v);
+            const int g = s.neighbors[f][i];
+            s.cellLoopOther[c].push_back(g < 0 ? -1 : s.faceCell[g]);
+            // Turn around the head vertex inside the cell to the next boundary edge.
+            int cf = f, ci = (i + 1) % 3;
+            for (int turns = 0; !IsCellBoundary(s, cf, ci); ++turns) {
+                if (turns > s.FaceCount()) {
+                    error = "internal error: lost walking around a vertex of cell " + std::to_string(c);
+                    return false;
+                }
+                const int g2 = s.neighbors[cf][ci];
+                const int j = TwinEdge(s, cf, ci);
+                cf = g2;
+                ci = (j + 1) % 3;
+            }
+            f = cf;
+            i = ci;
+        } while (f != startFace || i != startEdge);
+        if (int(s.cellLoop[c].size()) != boundaryEdges) {
+            error = "internal error: cell " + std::to_string(c) + " has more than one boundary loop";
+            return false;
+        }
+    }
+    return true;
+}
+
+}  // namespace detail
+
+/// Builds the surface the meshing stage walks, or returns false with the reason in `error`.
+///
+/// Accepted input: finite coordinates; every edge shared by at most two faces, walked in
+/// opposite directions by them (an edge-manifold, consistently oriented mesh, possibly open,
+/// possibly with several components). Faces with a repeated vertex are ignored (they have no
+/// area); vertices where several fans of faces meet are split per fan, so such a vertex
+/// becomes several output vertices at the same place.
+inline bool BuildMeshingSurface(const IndexedMesh &im, const std::vector<int> &faceRegion, int regionCount,
+                                MeshingSurface &s, std::string &error)
+{
+    s = MeshingSurface();
+    s.regionCount = regionCount;
+    for (const Point3d &p : im.positions)
+        if (!(std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]))) {
+            error = "the mesh has vertices with NaN or infinite coordinates";
+            return false;
+        }
+    IndexedMesh kept;
+    kept.positions = im.positions;
+    for (int f = 0; f < im.FaceCount(); ++f) {
+        const auto &t = im.faces[f];
+        if (t[0] == t[1] || t[1] == t[2] || t[2] == t[0]) {
+            ++s.ignoredFaces;
+            continue;
+        }
+        kept.faces.push_back(t);
+        s.sourceFace.push_back(f);
+        s.faceRegion.push_back(faceRegion[f]);
+    }
+    if (kept.faces.empty()) {
+        error = "the mesh has no faces with three distinct vertices";
+        return false;
+    }
+    MeshDiagnostics diag;
+    detail::LinkFaces(kept, diag);
+    if (diag.nonManifoldEdges > 0) {
+        error = "the mesh has " + std::to_string(diag.nonManifoldEdges) +
+                " non-manifold edges (shared by more than two faces); repair them first "
+                "(MeshLab: Cleaning and Repairing > Repair non Manifold Edges)";
+        return false;
+    }
+    if (diag.inconsistentEdges > 0) {
+        error = "the mesh is not consistently oriented (" + std::to_string(diag.inconsistentEdges) +
+                " edges are walked the same way by both faces); orient it first "
+                "(MeshLab: Normals > Re-Orient all faces coherently)";
+        return false;
+    }
+    s.positions = std::move(kept.positions);
+    s.sourceVertex.resize(s.positions.size());
+    std::iota(s.sourceVertex.begin(), s.sourceVertex.end(), 0);
+    s.faces = std::move(kept.faces);
+    s.neighbors = std::move(kept.neighbors);
+    detail::SplitVerticesPerFan(s);
+
+    std::vector<int> vertexOfCorner;
+    vertexOfCorner.reserve(s.faces.size() * 3);
+    for (const auto &t : s.faces)
+        for (int v : t) vertexOfCorner.push_back(v);
+    detail::BuildOffsets(vertexOfCorner, s.VertexCount(), s.vertexFaceOffset, s.vertexFaces);
+    for (int &corner : s.vertexFaces) corner /= 3;  // corner index -> face index
+
+    detail::BuildCells(s);
+    return detail::TraceCellLoops(s, error);
+}
+
+}  // namespace vsa
+}  // namespace tri
+}  // namespace vcg
+
+#endif  // VSA_BOUNDARY_CHAINS_H

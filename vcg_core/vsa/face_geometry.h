@@ -1,0 +1,79 @@
+// Variational Shape Approximation for vcglib — per-face geometry the metrics work on.
+// SPDX-License-Identifier: GPL-3.0-or-later
+#ifndef VSA_FACE_GEOMETRY_H
+#define VSA_FACE_GEOMETRY_H
+
+#include <vsa/indexed_mesh.h>
+
+#include <array>
+#include <cmath>
+#include <limits>
+#include <vector>
+
+namespace vcg {
+namespace tri {
+namespace vsa {
+
+/// A symmetric 3x3 matrix stored as its six distinct entries: xx, yy, zz, xy, xz, yz.
+using SymmetricMatrix3 = std::array<double, 6>;
+
+/// Everything the metrics need about each face, computed once, in flat arrays indexed by face.
+struct FaceGeometry
+{
+    std::vector<double> area;
+    /// Unit normal, following the face's vertex order; (0,0,0) for a zero-area face, so a
+    /// degenerate face contributes nothing (it has no area) and never a NaN.
+    std::vector<Point3d> normal;
+    std::vector<Point3d> centroid;
+    /// Only for the L2 metric: the integral over the face of (x - c)(x - c)^T, c the centroid.
+    /// The L2 error of a face and the covariance of a region are both exact sums of these.
+    std::vector<SymmetricMatrix3> secondMoment;
+
+    int FaceCount() const { return int(area.size()); }
+    bool HasSecondMoments() const { return secondMoment.size() == area.size(); }
+};
+
+/// Fills the per-face arrays of `mesh`; second moments only when `withSecondMoments`.
+inline FaceGeometry ComputeFaceGeometry(const IndexedMesh &mesh, bool withSecondMoments)
+{
+    const int faceCount = mesh.FaceCount();
+    FaceGeometry g;
+    g.area.resize(faceCount);
+    g.normal.resize(faceCount);
+    g.centroid.resize(faceCount);
+    if (withSecondMoments) g.secondMoment.resize(faceCount);
+    for (int f = 0; f < faceCount; ++f) {
+        const Point3d &p0 = mesh.positions[mesh.faces[f][0]];
+        const Point3d &p1 = mesh.positions[mesh.faces[f][1]];
+        const Point3d &p2 = mesh.positions[mesh.faces[f][2]];
+        const Point3d cross = (p1 - p0) ^ (p2 - p0);
+        const double doubleArea = cross.Norm();
+        // Below the smallest normal double the direction is noise: treat the face as flat zero.
+        const bool hasNormal = std::isfinite(doubleArea) && doubleArea > std::numeric_limits<double>::min();
+        g.area[f] = hasNormal ? 0.5 * doubleArea : 0.0;
+        g.normal[f] = hasNormal ? cross / doubleArea : Point3d(0, 0, 0);
+        g.centroid[f] = (p0 + p1 + p2) / 3.0;
+        if (withSecondMoments) {
+            // For a triangle, integral of (x-c)(x-c)^T = area/12 * sum of e_i e_i^T, e_i = p_i - c.
+            SymmetricMatrix3 m{0, 0, 0, 0, 0, 0};
+            for (const Point3d *p : {&p0, &p1, &p2}) {
+                const Point3d e = *p - g.centroid[f];
+                m[0] += e[0] * e[0];
+                m[1] += e[1] * e[1];
+                m[2] += e[2] * e[2];
+                m[3] += e[0] * e[1];
+                m[4] += e[0] * e[2];
+                m[5] += e[1] * e[2];
+            }
+            for (double &x : m) x *= g.area[f] / 12.0;
+            g.secondMoment[f] = m;
+        }
+    }
+    return g;
+}
+
+}  // namespace vsa
+}  // namespace tri
+}  // namespace vcg
+
+#endif  // VSA_FACE_GEOMETRY_H

@@ -1,0 +1,371 @@
+// Variational Shape Approximation for vcglib — validity check of a triangle mesh: manifoldness,
+// orientation, border, degenerate and duplicate faces, Euler characteristic, self-intersections.
+// SPDX-License-Identifier: GPL-3.0-or-later
+#ifndef VSA_MESH_VALIDITY_H
+#define VSA_MESH_VALIDITY_H
+
+#include <vsa/indexed_mesh.h>
+
+#include <vcg/space/index/grid_util.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <sstream>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace vcg {
+namespace tri {
+namespace vsa {
+
+/// What a mesh is, topologically and geometrically: the answer to "is this output usable?".
+/// Counts are over live faces and the vertices they use (see BuildIndexedMesh).
+struct MeshValidity
+{
+    int vertices = 0, faces = 0, edges = 0;
+    int borderEdges = 0;
+    int nonManifoldEdges = 0;     ///< edges shared by more than two faces
+    int nonManifoldVertices = 0;  ///< vertices whose faces form several fans
+    int inconsistentEdges = 0;    ///< manifold edges walked the same way by both faces
+    int degenerateFaces = 0;      ///< repeated vertex, (relatively) zero area or NaN
+    int duplicateFaces = 0;       ///< faces on the same three vertices as an earlier face
+    int selfIntersections = 0;    ///< pairs of faces that meet beyond their shared vertices; -1 if not counted
+    int components = 0;           ///< connected through manifold edges
+    int eulerCharacteristic = 0;  ///< V - E + F
+    bool manifold = false;        ///< edge- and vertex-manifold
+    bool closed = false;          ///< no border edge
+    bool oriented = false;        ///< every manifold edge walked both ways
+
+    /// Manifold, oriented, and free of degenerate, duplicate and self-intersecting faces.
+    bool IsValid() const
+    {
+        return manifold && oriented && degenerateFaces == 0 && duplicateFaces == 0 && selfIntersections <= 0;
+    }
+
+    std::string Summary() const
+    {
+        std::ostringstream s;
+        s << faces << " faces, " << vertices << " vertices, " << edges << " edges, " << components
+          << " component(s), Euler characteristic " << eulerCharacteristic << "; "
+          << (manifold ? "manifold" : "NOT manifold") << ", " << (oriented ? "oriented" : "NOT oriented") << ", "
+          << (closed ? "closed" : "open");
+        if (borderEdges) s << ", " << borderEdges << " border edges";
+        if (nonManifoldEdges) s << ", " << nonManifoldEdges << " non-manifold edges";
+        if (nonManifoldVertices) s << ", " << nonManifoldVertices << " non-manifold vertices";
+        if (inconsistentEdges) s << ", " << inconsistentEdges << " inconsistently oriented edges";
+        if (degenerateFaces) s << ", " << degenerateFaces << " degenerate faces";
+        if (duplicateFaces) s << ", " << duplicateFaces << " duplicate faces";
+        if (selfIntersections > 0) s << ", " << selfIntersections << " self-intersecting face pairs";
+        if (selfIntersections < 0) s << ", self-intersections not checked";
+        return s.str();
+    }
+};
+
+namespace detail {
+
+/// Faces on the same vertex triple as an earlier face, whatever their orientation.
+inline int CountDuplicateFaces(const IndexedMesh &im)
+{
+    std::vector<std::array<int, 3>> sorted(im.faces);
+    for (auto &t : sorted) std::sort(t.begin(), t.end());
+    std::sort(sorted.begin(), sorted.end());
+    int duplicates = 0;
+    for (size_t i = 1; i < sorted.size(); ++i)
+        if (sorted[i] == sorted[i - 1]) ++duplicates;
+    return duplicates;
+}
+
+/// Undirected edges, from the pairing made by BuildIndexedMesh: each manifold edge is seen
+/// from its two faces, border and non-manifold edges are counted there.
+inline int CountEdges(const IndexedMesh &im, const MeshDiagnostics &diag)
+{
+    int pairedHalfEdges = 0;
+    for (const auto &n : im.neighbors)
+        for (int g : n) pairedHalfEdges += g >= 0;
+    return pairedHalfEdges / 2 + diag.borderEdges + diag.nonManifoldEdges;
+}
+
+// The predicates below are plain double, not exact: they count defects, they decide nothing.
+inline double Orient2d(const Point2d &a, const Point2d &b, const Point2d &c)
+{
+    return (b - a) ^ (c - a);
+}
+
+/// Closed segments pq and rs in the plane share a point.
+inline bool SegmentsMeet2d(const Point2d &p, const Point2d &q, const Point2d &r, const Point2d &s)
+{
+    const double d1 = Orient2d(p, q, r), d2 = Orient2d(p, q, s);
+    const double d3 = Orient2d(r, s, p), d4 = Orient2d(r, s, q);
+    if (((d1 > 0 && d2 < 0) || (d1 < 0 && d2 > 0)) && ((d3 > 0 && d4 < 0) || (d3 < 0 && d4 > 0))) return true;
+    auto onSegment = [](const Point2d &a, const Point2d &b, const Point2d &c) {  // c on ab, given collinear
+        return std::min(a[0], b[0]) <= c[0] && c[0] <= std::max(a[0], b[0]) && std::min(a[1], b[1]) <= c[1] &&
+               c[1] <= std::max(a[1], b[1]);
+    };
+    return (d1 == 0 && onSegment(p, q, r)) || (d2 == 0 && onSegment(p, q, s)) || (d3 == 0 && onSegment(r, s, p)) ||
+           (d4 == 0 && onSegment(r, s, q));
+}
+
+inline bool PointInTriangle2d(const Point2d &p, const std::array<Point2d, 3> &t)
+{
+    const double a = Orient2d(t[0], t[1], p), b = Orient2d(t[1], t[2], p), c = Orient2d(t[2], t[0], p);
+    return (a >= 0 && b >= 0 && c >= 0) || (a <= 0 && b <= 0 && c <= 0);
+}
+
+/// Drops the coordinate along which `normal` is largest: a projection that keeps the
+/// triangles of that plane non-degenerate.
+inline Point2d DropAxis(const Point3d &p, int axis)
+{
+    return Point2d(p[(axis + 1) % 3], p[(axis + 2) % 3]);
+}
+
+inline int DominantAxis(const Point3d &n)
+{
+    const double x = std::abs(n[0]), y = std::abs(n[1]), z = std::abs(n[2]);
+    return x >= y && x >= z ? 0 : (y >= z ? 1 : 2);
+}
+
+/// Closed segment pq meets closed triangle abc in the plane.
+inline bool SegmentMeetsTriangle2d(const Point2d &p, const Point2d &q, const std::array<Point2d, 3> &t)
+{
+    if (PointInTriangle2d(p, t) || PointInTriangle2d(q, t)) return true;
+    for (int i = 0; i < 3; ++i)
+        if (SegmentsMeet2d(p, q, t[i], t[(i + 1) % 3])) return true;
+    return false;
+}
+
+/// Closed segment pq meets closed triangle abc (unit normal n); endpoints within `tolerance`
+/// of the plane count as on it, so that a segment touching the plane is tested where it
+/// touches, not by the sign of a rounding error.
+inline bool SegmentMeetsTriangle(const Point3d &p, const Point3d &q, const Point3d &a, const Point3d &b,
+                                 const Point3d &c, const Point3d &n, double tolerance)
+{
+    const double sp = n * (p - a), sq = n * (q - a);
+    if ((sp > tolerance && sq > tolerance) || (sp < -tolerance && sq < -tolerance)) return false;
+    const int axis = DominantAxis(n);
+    const std::array<Point2d, 3> t = {DropAxis(a, axis), DropAxis(b, axis), DropAxis(c, axis)};
+    const bool pOn = std::abs(sp) <= tolerance, qOn = std::abs(sq) <= tolerance;
+    if (pOn && qOn) return SegmentMeetsTriangle2d(DropAxis(p, axis), DropAxis(q, axis), t);
+    const Point3d x = pOn ? p : (qOn ? q : p + (q - p) * (sp / (sp - sq)));
+    return PointInTriangle2d(DropAxis(x, axis), t);
+}
+
+/// Two open convex sectors at a common apex, given by their boundary directions in the
+/// plane, overlap. A triangle lies inside its sector at any of its vertices, so two coplanar
+/// triangles sharing a vertex overlap exactly when their sectors there do.
+inline bool SectorsOverlap2d(Point2d u0, Point2d v0, Point2d u1, Point2d v1)
+{
+    if ((u0 ^ v0) < 0) std::swap(u0, v0);  // counter-clockwise from u to v
+    if ((u1 ^ v1) < 0) std::swap(u1, v1);
+    // Relative tolerance: directions within ~1e-12 rad count as the same ray.
+    auto side = [](const Point2d &a, const Point2d &b) {
+        const double s = (a ^ b), scale = a.Norm() * b.Norm();
+        return s > 1e-12 * scale ? 1 : (s < -1e-12 * scale ? -1 : 0);
+    };
+    auto strictlyInside = [&](const Point2d &d, const Point2d &u, const Point2d &v) {
+        return side(u, d) > 0 && side(d, v) > 0;
+    };
+    auto sameRay = [&](const Point2d &a, const Point2d &b) { return side(a, b) == 0 && a * b > 0; };
+    return strictlyInside(u1, u0, v0) || strictlyInside(v1, u0, v0) || strictlyInside(u0, u1, v1) ||
+           strictlyInside(v0, u1, v1) || (sameRay(u0, u1) && sameRay(v0, v1));
+}
+
+/// Whether faces f and g of `im` meet anywhere but at their shared corners. Corners are
+/// shared when they are at the same place, whether or not they are the same vertex: faces of
+/// an unmerged mesh, or of a mesh whose non-manifold vertex was split, that touch only along
+/// their common corners do not intersect.
+inline bool FacesIntersect(const IndexedMesh &im, int f, int g)
+{
+    const auto &tf = im.faces[f], &tg = im.faces[g];
+    const auto &P = im.positions;
+    int sharedF[3], sharedG[3], shared = 0;
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j)
+            if (P[tf[i]] == P[tg[j]]) {
+                sharedF[shared] = i;
+                sharedG[shared] = j;
+                ++shared;
+            }
+    if (shared == 3) return false;  // a duplicate face (counted as such if it shares vertices)
+    const Point3d a = P[tf[0]], b = P[tf[1]], c = P[tf[2]];
+    const Point3d nf = ((b - a) ^ (c - a)).Normalize();
+    const Point3d ng = ((P[tg[1]] - P[tg[0]]) ^ (P[tg[2]] - P[tg[0]])).Normalize();
+    double longest = 0;
+    for (int i = 0; i < 3; ++i) {
+        longest = std::max(longest, (P[tf[i]] - P[tf[(i + 1) % 3]]).Norm());
+        longest = std::max(longest, (P[tg[i]] - P[tg[(i + 1) % 3]]).Norm());
+    }
+    const int axis = DominantAxis(nf);
+
+    if (shared == 0) {
+        const double onPlane = 1e-12 * longest;
+        bool coplanar = true;
+        for (int j = 0; j < 3; ++j) coplanar &= std::abs(nf * (P[tg[j]] - a)) <= onPlane;
+        if (!coplanar) {
+            for (int i = 0; i < 3; ++i) {
+                if (SegmentMeetsTriangle(P[tf[i]], P[tf[(i + 1) % 3]], P[tg[0]], P[tg[1]], P[tg[2]], ng, onPlane))
+                    return true;
+                if (SegmentMeetsTriangle(P[tg[i]], P[tg[(i + 1) % 3]], a, b, c, nf, onPlane)) return true;
+            }
+            return false;
+        }
+        std::array<Point2d, 3> f2, g2;
+        for (int i = 0; i < 3; ++i) {
+            f2[i] = DropAxis(P[tf[i]], axis);
+            g2[i] = DropAxis(P[tg[i]], axis);
+        }
+        for (int i = 0; i < 3; ++i)
+            for (int j = 0; j < 3; ++j)
+                if (SegmentsMeet2d(f2[i], f2[(i + 1) % 3], g2[j], g2[(j + 1) % 3])) return true;
+        return PointInTriangle2d(f2[0], g2) || PointInTriangle2d(g2[0], f2);
+    }
+    if (shared == 2) {
+        // Faces sharing an edge meet beyond it only when folded flat onto each other: the
+        // directions from the edge to the two opposite vertices (nearly) coincide.
+        const Point3d hinge0 = P[tf[sharedF[0]]], hinge = (P[tf[sharedF[1]]] - hinge0).Normalize();
+        const Point3d c3 = P[tf[3 - sharedF[0] - sharedF[1]]] - hinge0, d3 = P[tg[3 - sharedG[0] - sharedG[1]]] - hinge0;
+        const Point3d uc = c3 - hinge * (c3 * hinge), ud = d3 - hinge * (d3 * hinge);
+        return uc * ud > 0 && (uc ^ ud).Norm() <= 1e-6 * uc.Norm() * ud.Norm();
+    }
+    // Sharing one vertex p. Both faces lie in their sectors at p, so if their projections on
+    // f's plane have disjoint sectors they cannot meet beyond p; when g is (nearly) in f's
+    // plane that sector test is the answer, a near-contact counting as an intersection.
+    // Otherwise they meet along a segment from p that ends on an edge opposite p.
+    const int i0 = sharedF[0], j0 = sharedG[0];
+    const double nearPlane = 1e-6 * longest;
+    bool nearlyCoplanar = true;
+    for (int j = 0; j < 3; ++j) nearlyCoplanar &= std::abs(nf * (P[tg[j]] - a)) <= nearPlane;
+    if (nearlyCoplanar) {
+        const Point2d apex = DropAxis(P[tf[i0]], axis);
+        return SectorsOverlap2d(DropAxis(P[tf[(i0 + 1) % 3]], axis) - apex,
+                                DropAxis(P[tf[(i0 + 2) % 3]], axis) - apex,
+                                DropAxis(P[tg[(j0 + 1) % 3]], axis) - apex,
+                                DropAxis(P[tg[(j0 + 2) % 3]], axis) - apex);
+    }
+    const double onPlane = 1e-12 * longest;
+    return SegmentMeetsTriangle(P[tf[(i0 + 1) % 3]], P[tf[(i0 + 2) % 3]], P[tg[0]], P[tg[1]], P[tg[2]], ng, onPlane) ||
+           SegmentMeetsTriangle(P[tg[(j0 + 1) % 3]], P[tg[(j0 + 2) % 3]], a, b, c, nf, onPlane);
+}
+
+/// Same criterion as BuildIndexedMesh's degenerate count; such faces have no plane to test.
+inline std::vector<char> DegenerateFaceMask(const IndexedMesh &im)
+{
+    Box3d box;
+    for (const Point3d &p : im.positions)
+        if (std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2])) box.Add(p);
+    const double tinyArea = 1e-14 * box.SquaredDiag();
+    std::vector<char> degenerate(im.faces.size(), 0);
+    for (size_t f = 0; f < im.faces.size(); ++f) {
+        const auto &t = im.faces[f];
+        const double doubleArea =
+            ((im.positions[t[1]] - im.positions[t[0]]) ^ (im.positions[t[2]] - im.positions[t[0]])).Norm();
+        degenerate[f] = t[0] == t[1] || t[1] == t[2] || t[2] == t[0] || !(doubleArea > 2 * tinyArea);
+    }
+    return degenerate;
+}
+
+/// Closed boxes overlap (vcg's Box3::Collide is strict and misses flat boxes).
+inline bool BoxesTouch(const Box3d &a, const Box3d &b)
+{
+    for (int i = 0; i < 3; ++i)
+        if (a.min[i] > b.max[i] || b.min[i] > a.max[i]) return false;
+    return true;
+}
+
+/// Pairs (f < g) of non-degenerate faces that intersect beyond their shared corners, in a
+/// deterministic order. Needs only `faces` and `positions`. Faces go in a uniform grid of
+/// about one cell per face; a pair is tested in the one cell holding the minimum corner of
+/// the overlap of their boxes, so each pair is tested at most once.
+inline std::vector<std::pair<int, int>> SelfIntersectingPairs(const IndexedMesh &im)
+{
+    const int faceCount = im.FaceCount();
+    const std::vector<char> degenerate = DegenerateFaceMask(im);
+    Box3d box;
+    std::vector<Box3d> faceBox(faceCount);
+    for (int f = 0; f < faceCount; ++f) {
+        if (degenerate[f]) continue;
+        for (int v : im.faces[f]) faceBox[f].Add(im.positions[v]);
+        box.Add(faceBox[f]);
+    }
+    std::vector<std::pair<int, int>> pairs;
+    if (box.IsNull()) return pairs;
+    box.Offset(box.Diag() * 1e-9 + 1e-300);  // no zero-thickness box for a flat mesh
+    Point3i dim;
+    BestDim<double>(std::max(faceCount, 1), box.Dim(), dim);
+    for (int i = 0; i < 3; ++i) dim[i] = std::max(dim[i], 1);
+    const Point3d cellSize(box.DimX() / dim[0], box.DimY() / dim[1], box.DimZ() / dim[2]);
+    auto cellOf = [&](const Point3d &p) {
+        Point3i c;
+        for (int i = 0; i < 3; ++i) c[i] = std::clamp(int((p[i] - box.min[i]) / cellSize[i]), 0, dim[i] - 1);
+        return c;
+    };
+    std::vector<Point3i> lo(faceCount), hi(faceCount);
+    std::vector<std::vector<int>> cells(size_t(dim[0]) * dim[1] * dim[2]);
+    auto cellIndex = [&](int x, int y, int z) { return (size_t(z) * dim[1] + y) * dim[0] + x; };
+    for (int f = 0; f < faceCount; ++f) {
+        if (degenerate[f]) continue;
+        lo[f] = cellOf(faceBox[f].min);
+        hi[f] = cellOf(faceBox[f].max);
+        for (int z = lo[f][2]; z <= hi[f][2]; ++z)
+            for (int y = lo[f][1]; y <= hi[f][1]; ++y)
+                for (int x = lo[f][0]; x <= hi[f][0]; ++x) cells[cellIndex(x, y, z)].push_back(f);
+    }
+    for (int z = 0; z < dim[2]; ++z)
+        for (int y = 0; y < dim[1]; ++y)
+            for (int x = 0; x < dim[0]; ++x) {
+                const std::vector<int> &cell = cells[cellIndex(x, y, z)];
+                for (size_t i = 0; i < cell.size(); ++i)
+                    for (size_t j = i + 1; j < cell.size(); ++j) {
+                        const int f = cell[i], g = cell[j];
+                        const Point3i first(std::max(lo[f][0], lo[g][0]), std::max(lo[f][1], lo[g][1]),
+                                            std::max(lo[f][2], lo[g][2]));
+                        if (first != Point3i(x, y, z) || !BoxesTouch(faceBox[f], faceBox[g])) continue;
+                        if (FacesIntersect(im, f, g)) pairs.emplace_back(std::min(f, g), std::max(f, g));
+                    }
+            }
+    return pairs;
+}
+
+}  // namespace detail
+
+/// Validity of an already indexed mesh, with the diagnostics BuildIndexedMesh gave for it.
+inline MeshValidity CheckMeshValidity(const IndexedMesh &im, const MeshDiagnostics &diag,
+                                      bool countSelfIntersections = true)
+{
+    MeshValidity v;
+    v.vertices = diag.vertices;
+    v.faces = diag.faces;
+    v.edges = detail::CountEdges(im, diag);
+    v.borderEdges = diag.borderEdges;
+    v.nonManifoldEdges = diag.nonManifoldEdges;
+    v.nonManifoldVertices = diag.nonManifoldVertices;
+    v.inconsistentEdges = diag.inconsistentEdges;
+    v.degenerateFaces = diag.degenerateFaces;
+    v.duplicateFaces = detail::CountDuplicateFaces(im);
+    v.selfIntersections = countSelfIntersections ? int(detail::SelfIntersectingPairs(im).size()) : -1;
+    v.components = diag.components;
+    v.eulerCharacteristic = v.vertices - v.edges + v.faces;
+    v.manifold = diag.IsTwoManifold();
+    v.closed = diag.borderEdges == 0;
+    v.oriented = diag.IsOriented();
+    return v;
+}
+
+/// Checks any vcg triangle mesh (MeshLab's CMeshO included); needs no adjacency or
+/// optional component, and changes nothing in `m`. Self-intersections cost a uniform-grid
+/// pass, O(F) on well-spread meshes; pass false to skip them (selfIntersections is then -1).
+template <class MeshType>
+MeshValidity CheckMeshValidity(const MeshType &m, bool countSelfIntersections = true)
+{
+    MeshDiagnostics diag;
+    const IndexedMesh im = BuildIndexedMesh(m, &diag);
+    return CheckMeshValidity(im, diag, countSelfIntersections);
+}
+
+}  // namespace vsa
+}  // namespace tri
+}  // namespace vcg
+
+#endif  // VSA_MESH_VALIDITY_H

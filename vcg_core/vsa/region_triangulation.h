@@ -1,0 +1,356 @@
+// Variational Shape Approximation for vcglib — triangulation of each cell's anchor polygon:
+// the paper's discrete flooding first, ear clipping on the proxy plane where the flooding
+// does not give a usable triangulation, and a fan around one extra vertex as the last resort.
+// SPDX-License-Identifier: GPL-3.0-or-later
+#ifndef VSA_REGION_TRIANGULATION_H
+#define VSA_REGION_TRIANGULATION_H
+
+#include <vsa/anchors.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <functional>
+#include <limits>
+#include <queue>
+#include <set>
+#include <unordered_set>
+#include <utility>
+#include <vector>
+
+namespace vcg {
+namespace tri {
+namespace vsa {
+
+/// The edges and faces of the output made so far. A cell never adds an edge or a face that
+/// already exists: with every cell a disc and chords unique, that is what keeps the output
+/// edge-manifold, vertex-manifold and free of duplicate faces.
+class OutputRegistry
+{
+public:
+    bool HasEdge(int a, int b) const { return edges_.count(Key(a, b)) != 0; }
+    void AddEdge(int a, int b) { edges_.insert(Key(a, b)); }
+    bool HasFace(const std::array<int, 3> &t) const { return faces_.count(Sorted(t)) != 0; }
+    void AddFace(const std::array<int, 3> &t)
+    {
+        faces_.insert(Sorted(t));
+        for (int i = 0; i < 3; ++i) AddEdge(t[i], t[(i + 1) % 3]);
+    }
+
+    static std::array<int, 3> Sorted(std::array<int, 3> t)
+    {
+        std::sort(t.begin(), t.end());
+        return t;
+    }
+
+private:
+    static uint64_t Key(int a, int b)
+    {
+        return (uint64_t(uint32_t(std::min(a, b))) << 32) | uint32_t(std::max(a, b));
+    }
+    std::unordered_set<uint64_t> edges_;  // membership only: iteration order never matters
+    std::set<std::array<int, 3>> faces_;
+};
+
+enum class CellMethod
+{
+    Flooding,     ///< every triangle came from the discrete flooding
+    EarClipping,  ///< the flooding was incomplete or unusable; ear clipping finished it
+    SteinerFan    ///< no valid triangulation on the anchors alone: a fan around an extra vertex
+};
+
+/// Triangles of one cell, on output vertex indices (anchor indices; the extra vertex of a fan
+/// is `steinerVertex`), oriented like the input.
+struct CellTriangulation
+{
+    CellMethod method = CellMethod::Flooding;
+    std::vector<std::array<int, 3>> triangles;
+    int steinerVertex = -1;
+    Point3d steinerPosition;
+    int steinerSourceVertex = -1;  ///< surface vertex the extra vertex sits on, or -1
+};
+
+/// The report's discrete flooding: every vertex of a cell takes the colour of its nearest
+/// anchor along edges, boundary vertices first along the boundary (so each chord's vertices
+/// split between its two anchors), then interior vertices by Dijkstra from the boundary. A
+/// face with three colours stands for the output triangle on those three anchors.
+class CellFlooding
+{
+public:
+    explicit CellFlooding(const MeshingSurface &s)
+        : s_(s), color_(s.positions.size(), -1), distance_(s.positions.size(), 0), onLoop_(s.positions.size(), 0)
+    {
+    }
+
+    /// Sorted anchor triples of the three-coloured faces of cell c.
+    std::set<std::array<int, 3>> Triples(int c, const AnchorSet &anchors)
+    {
+        ColorLoop(c, anchors);
+        FloodInterior(c);
+        std::set<std::array<int, 3>> triples;
+        for (int k = s_.cellFaceOffset[c]; k < s_.cellFaceOffset[c + 1]; ++k) {
+            const auto &t = s_.faces[s_.cellFaces[k]];
+            std::array<int, 3> colors = {color_[t[0]], color_[t[1]], color_[t[2]]};
+            if (colors[0] < 0 || colors[1] < 0 || colors[2] < 0) continue;
+            if (colors[0] == colors[1] || colors[1] == colors[2] || colors[2] == colors[0]) continue;
+            triples.insert(OutputRegistry::Sorted(colors));
+        }
+        return triples;
+    }
+
+    /// The interior vertex of the last flooded cell farthest from its anchors, or -1.
+    int DeepestInteriorVertex() const { return deepest_; }
+
+    /// Clears what the last cell left in the per-vertex arrays.
+    void Reset()
+    {
+        for (int v : touched_) color_[v] = -1, onLoop_[v] = 0;
+        touched_.clear();
+    }
+
+private:
+    const MeshingSurface &s_;
+    std::vector<int> color_;
+    std::vector<double> distance_;
+    std::vector<char> onLoop_;
+    std::vector<int> touched_;
+    int deepest_ = -1;
+
+    void Set(int v, int color, double distance)
+    {
+        if (color_[v] < 0 && !onLoop_[v]) touched_.push_back(v);
+        color_[v] = color;
+        distance_[v] = distance;
+    }
+
+    void ColorLoop(int c, const AnchorSet &anchors)
+    {
+        Reset();
+        const std::vector<int> &loop = s_.cellLoop[c];
+        const int m = int(loop.size());
+        for (int v : loop) {
+            touched_.push_back(v);
+            onLoop_[v] = 1;
+        }
+        const std::vector<int> at = detail::AnchorPositionsInLoop(s_, c, anchors);
+        std::vector<double> arc;
+        for (size_t k = 0; k < at.size(); ++k) {
+            const int from = at[k], to = k + 1 < at.size() ? at[k + 1] : at[0] + m;
+            arc.assign(1, 0.0);
+            for (int t = from + 1; t <= to; ++t)
+                arc.push_back(arc.back() + (s_.positions[loop[t % m]] - s_.positions[loop[(t - 1) % m]]).Norm());
+            const int first = anchors.anchorOfVertex[loop[from]], last = anchors.anchorOfVertex[loop[to % m]];
+            color_[loop[from]] = first;
+            distance_[loop[from]] = 0;
+            for (int t = from + 1; t < to; ++t) {
+                const double fromFirst = arc[t - from], fromLast = arc.back() - fromFirst;
+                color_[loop[t % m]] = fromFirst <= fromLast ? first : last;
+                distance_[loop[t % m]] = std::min(fromFirst, fromLast);
+            }
+        }
+    }
+
+    void FloodInterior(int c)
+    {
+        using Item = std::pair<double, int>;
+        std::priority_queue<Item, std::vector<Item>, std::greater<Item>> queue;
+        for (int v : s_.cellLoop[c]) queue.push({distance_[v], v});
+        deepest_ = -1;
+        while (!queue.empty()) {
+            const auto [d, u] = queue.top();
+            queue.pop();
+            if (d > distance_[u]) continue;  // stale entry
+            if (!onLoop_[u] && (deepest_ < 0 || d > distance_[deepest_])) deepest_ = u;
+            for (int k = s_.vertexFaceOffset[u]; k < s_.vertexFaceOffset[u + 1]; ++k) {
+                const int f = s_.vertexFaces[k];
+                if (s_.faceCell[f] != c) continue;
+                for (int w : s_.faces[f]) {
+                    if (w == u || onLoop_[w]) continue;
+                    const double nd = d + (s_.positions[w] - s_.positions[u]).Norm();
+                    if (color_[w] >= 0 && !(nd < distance_[w])) continue;
+                    Set(w, color_[u], nd);
+                    queue.push({nd, w});
+                }
+            }
+        }
+    }
+};
+
+namespace detail {
+
+/// Ear clipping of one anchor polygon, on the plane of its cell. Geometrically sound ears
+/// (convex, no other polygon vertex in the triangle) come first, and among them those the
+/// flooding found; then flooding ears, convex first; then any convex ear; then anything, so
+/// that a polygon that folds on the plane still gets triangulated. Within a rank the fattest
+/// triangle (largest smallest angle) wins. An ear is never taken if its new edge already
+/// exists in the output or its triangle is degenerate.
+class EarClipper
+{
+public:
+    EarClipper(const std::vector<int> &polygon, const std::vector<Point3d> &positions, const Point3d &normal,
+               const std::set<std::array<int, 3>> &flooding, const OutputRegistry &registry)
+        : polygon_(polygon), positions_(positions), flooding_(flooding), registry_(registry)
+    {
+        const int n = int(polygon.size());
+        Point3d u = std::abs(normal[0]) < 0.6 ? Point3d(1, 0, 0) : Point3d(0, 1, 0);
+        u = (u - normal * (u * normal)).Normalize();
+        const Point3d v = normal ^ u;
+        for (int k = 0; k < n; ++k) {
+            const Point3d &p = positions[polygon[k]];
+            plane_.push_back(Point2d(p * u, p * v));
+        }
+        double twiceArea = 0;
+        for (int k = 0; k < n; ++k) twiceArea += plane_[k] ^ plane_[(k + 1) % n];
+        orientation_ = twiceArea < 0 ? -1.0 : 1.0;
+        prev_.resize(n);
+        next_.resize(n);
+        for (int k = 0; k < n; ++k) prev_[k] = (k + n - 1) % n, next_[k] = (k + 1) % n;
+        rank_.assign(n, kNoEar);
+        quality_.assign(n, 0);
+        alive_ = n;
+        for (int k = 0; k < n; ++k) Evaluate(k);
+    }
+
+    /// Clips the polygon down to its last triangle. Returns false when it gets stuck.
+    bool Run(std::vector<std::array<int, 3>> &triangles, bool &allFromFlooding)
+    {
+        allFromFlooding = true;
+        int any = 0;
+        while (alive_ > 3) {
+            int best = -1;
+            for (int k = any, steps = 0; steps < alive_; k = next_[k], ++steps)
+                if (rank_[k] != kNoEar &&
+                    (best < 0 || rank_[k] < rank_[best] ||
+                     (rank_[k] == rank_[best] && (quality_[k] > quality_[best] ||
+                                                  (quality_[k] == quality_[best] && k < best)))))
+                    best = k;
+            if (best < 0) return false;
+            const int p = prev_[best], q = next_[best];
+            const std::array<int, 3> t = {polygon_[p], polygon_[best], polygon_[q]};
+            allFromFlooding &= flooding_.count(OutputRegistry::Sorted(t)) != 0;
+            triangles.push_back(t);
+            next_[p] = q;
+            prev_[q] = p;
+            rank_[best] = kNoEar;
+            --alive_;
+            any = p;
+            Evaluate(p);
+            Evaluate(q);
+        }
+        const int p = prev_[any], q = next_[any];
+        const std::array<int, 3> last = {polygon_[p], polygon_[any], polygon_[q]};
+        if (registry_.HasFace(last) || Degenerate(last)) return false;
+        allFromFlooding &= flooding_.count(OutputRegistry::Sorted(last)) != 0;
+        triangles.push_back(last);
+        return true;
+    }
+
+    /// Sine of the smallest angle of a triangle; 0 when degenerate.
+    static double SineOfSmallestAngle(const Point3d &a, const Point3d &b, const Point3d &c)
+    {
+        const double ab = (b - a).Norm(), bc = (c - b).Norm(), ca = (a - c).Norm();
+        const double twiceArea = ((b - a) ^ (c - a)).Norm();
+        const double longest = std::max({ab, bc, ca});
+        if (!(longest > 0)) return 0;
+        // The smallest angle faces the shortest edge; sin = 2A / (product of the other two).
+        const double shortest = std::min({ab, bc, ca});
+        const double others = ab * bc * ca / shortest;
+        return others > 0 ? twiceArea / others : 0;
+    }
+
+private:
+    static constexpr int kNoEar = std::numeric_limits<int>::max();
+    const std::vector<int> &polygon_;
+    const std::vector<Point3d> &positions_;
+    const std::set<std::array<int, 3>> &flooding_;
+    const OutputRegistry &registry_;
+    std::vector<Point2d> plane_;
+    double orientation_ = 1;
+    std::vector<int> prev_, next_, rank_;
+    std::vector<double> quality_;
+    int alive_ = 0;
+
+    bool Degenerate(const std::array<int, 3> &t) const
+    {
+        return SineOfSmallestAngle(positions_[t[0]], positions_[t[1]], positions_[t[2]]) < 1e-6;
+    }
+
+    double Turn(int a, int b, int c) const { return orientation_ * ((plane_[b] - plane_[a]) ^ (plane_[c] - plane_[a])); }
+
+    void Evaluate(int k)
+    {
+        rank_[k] = kNoEar;
+        const int p = prev_[k], q = next_[k];
+        const int a = polygon_[p], b = polygon_[k], c = polygon_[q];
+        // A diagonal of this polygon cannot come up twice: once made, its ends are neighbours.
+        if (registry_.HasEdge(a, c)) return;
+        const std::array<int, 3> t = {a, b, c};
+        if (Degenerate(t)) return;
+        const bool flooded = flooding_.count(OutputRegistry::Sorted(t)) != 0;
+        const bool convex = Turn(p, k, q) > 0;
+        bool empty = convex;
+        for (int w = next_[q]; empty && w != p; w = next_[w])
+            empty = !(Turn(p, k, w) >= 0 && Turn(k, q, w) >= 0 && Turn(q, p, w) >= 0);
+        if (convex && empty) rank_[k] = flooded ? 0 : 1;
+        else if (flooded) rank_[k] = convex ? 2 : 3;
+        else rank_[k] = convex ? 4 : 5;
+        quality_[k] = SineOfSmallestAngle(positions_[a], positions_[b], positions_[c]);
+    }
+};
+
+}  // namespace detail
+
+/// Triangulates one cell's anchor polygon (anchor indices in loop order, cell on the left)
+/// and records its faces in `registry`. The chords must already be in the registry; the
+/// fan's extra vertex, if needed, gets index `nextVertex`.
+inline CellTriangulation TriangulateCell(const MeshingSurface &s, int c, const std::vector<int> &polygon,
+                                         const std::vector<Point3d> &anchorPositions, const Proxy &proxy,
+                                         const AnchorSet &anchors, CellFlooding &flooding, OutputRegistry &registry,
+                                         int nextVertex)
+{
+    CellTriangulation result;
+    const std::set<std::array<int, 3>> triples = flooding.Triples(c, anchors);
+
+    // The plane to clip on: the cell's own area-weighted normal, which follows the input's
+    // orientation (an L2 proxy normal may point either way); the proxy's if the cell folds
+    // back onto itself so much that its normals cancel out.
+    Point3d normal(0, 0, 0);
+    double area = 0;
+    Point3d centroid(0, 0, 0);
+    for (int k = s.cellFaceOffset[c]; k < s.cellFaceOffset[c + 1]; ++k) {
+        const auto &t = s.faces[s.cellFaces[k]];
+        const Point3d n = (s.positions[t[1]] - s.positions[t[0]]) ^ (s.positions[t[2]] - s.positions[t[0]]);
+        normal += n;
+        area += n.Norm();
+        centroid += (s.positions[t[0]] + s.positions[t[1]] + s.positions[t[2]]) * (n.Norm() / 3);
+    }
+    if (normal.Norm() > 1e-6 * area) normal.Normalize();
+    else normal = proxy.normal * (proxy.normal * normal < 0 ? -1.0 : 1.0);
+
+    bool allFromFlooding = false;
+    detail::EarClipper clipper(polygon, anchorPositions, normal, triples, registry);
+    if (clipper.Run(result.triangles, allFromFlooding)) {
+        result.method = allFromFlooding ? CellMethod::Flooding : CellMethod::EarClipping;
+    } else {
+        // A fan from a new vertex adds only new edges and new faces, so it always fits. The
+        // vertex stays on the input surface, at the cell's vertex deepest inside it.
+        result.method = CellMethod::SteinerFan;
+        result.triangles.clear();
+        result.steinerVertex = nextVertex;
+        result.steinerSourceVertex = flooding.DeepestInteriorVertex();
+        result.steinerPosition = result.steinerSourceVertex >= 0 ? s.positions[result.steinerSourceVertex]
+                                                                 : centroid / (area > 0 ? area : 1.0);
+        for (size_t k = 0; k < polygon.size(); ++k)
+            result.triangles.push_back({polygon[k], polygon[(k + 1) % polygon.size()], nextVertex});
+    }
+    for (const auto &t : result.triangles) registry.AddFace(t);
+    flooding.Reset();
+    return result;
+}
+
+}  // namespace vsa
+}  // namespace tri
+}  // namespace vcg
+
+#endif  // VSA_REGION_TRIANGULATION_H
