@@ -87,6 +87,8 @@ bool FilterVsaPlugin::apply(MeshDocument &md, const RichParameterList &parameter
     const QString name = ApproximationLayerName(input->label(), outcome.regionCount);
     MeshModel *output = md.addNewMesh("", name, false);
     Log(qUtf8Printable(QString("VSA: added layer \"%1\"").arg(name)));
+    // MeshCopy copies only the attributes enabled on the destination.
+    if (settings.colorizeRegions) output->updateDataMask(MeshModel::MM_FACECOLOR);
     vcg::tri::Append<CMeshO, CMeshO>::MeshCopy(output->cm, approximation);
     output->UpdateBoxAndNormals();
     if (settings.anchorLayer) {

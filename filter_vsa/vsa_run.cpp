@@ -106,10 +106,9 @@ VsaRunOutcome RunVsa(const CMeshO &input, const VsaFilterSettings &settings, CMe
                 approximation.face[f].C() = RegionColor(r.meshing.faceRegion[f], outcome.regionCount);
         if (anchors) {
             anchors->Clear();
-            // Every output vertex that comes from an input vertex is an anchor.
-            for (size_t v = 0; v < approximation.vert.size(); ++v)
-                if (r.meshing.vertexSource[v] >= 0)
-                    vcg::tri::Allocator<CMeshO>::AddVertex(*anchors, approximation.vert[v].cP());
+            // The meshing writes the anchors first, then any extra (fan) vertices.
+            for (int v = 0; v < r.meshing.anchors; ++v)
+                vcg::tri::Allocator<CMeshO>::AddVertex(*anchors, approximation.vert[v].cP());
         }
         outcome.ok = true;
     } catch (const std::bad_alloc &) {

@@ -11,7 +11,7 @@ mkdir -p "$deps"
 
 packages=(meshlab qtbase5-dev libqt5opengl5-dev libqt5xmlpatterns5-dev libglew-dev libeigen3-dev
           libgtest-dev cmake g++ make xvfb xauth dpkg-dev libcgal-dev libgmp-dev libmpfr-dev
-          libboost-dev x11-apps xdotool imagemagick python3 ca-certificates)
+          libboost-dev x11-apps xdotool imagemagick tesseract-ocr tesseract-ocr-eng python3 ca-certificates)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

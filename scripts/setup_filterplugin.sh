@@ -7,16 +7,19 @@
 #    against the Sources index, which it checked against Debian's signed Release file
 #  - unpacked into .deps/meshlab-modern/<ML_VERSION>/src, and only `meshlab-common` plus two of
 #    MeshLab's own plugins (io_base: mesh I/O; filter_measure: a reference filter plugin) built
-#    into .deps/meshlab-modern/<ML_VERSION>/build (mini build, no optional external libraries),
+#    into .deps/meshlab-modern/<ML_VERSION>/build (float) and build-double (double) (mini build,
+#    no optional external libraries),
 #    cached by the tarball's sha256 (build/.vsa-stamp): a second run only re-reads apt's index.
 #  - .deps/meshlab-modern/current -> <ML_VERSION>; build/meshlab-build-info.cmake and
-#    build/meshlab-build-info.txt tell the MESHLAB_VERSION / MESHLAB_SCALAR the build used.
+#    build/meshlab-build-info.txt tell the MESHLAB_VERSION / MESHLAB_SCALAR the build used;
+#    cmake/MeshLabFilterPlugin.cmake reads the former (-DVSA_FILTERPLUGIN_MESHLAB_DIR=<build dir>).
 # Environment:
 #   VSA_FILTERPLUGIN_OFFLINE=1     skip `apt-get update` (use the lists fetched last time)
 #   VSA_FILTERPLUGIN_VERSION=V     fetch meshlab=V instead of the newest (e.g. 2025.07~dfsg-4)
 #   VSA_FILTERPLUGIN_PLUGINS="io_base filter_measure"   MeshLab plugins to build with the library
-#   VSA_FILTERPLUGIN_SCALARS="float double"   also build a double-precision tree in build-double
-#                                  (pymeshlab's precision; MESHLAB_VERSION gets a "d": 2025.07d)
+#   VSA_FILTERPLUGIN_SCALARS="float double"   (default) the float tree in build/ (MeshLab's own
+#                                  releases) and a double one in build-double (pymeshlab's precision;
+#                                  MESHLAB_VERSION gets a "d": 2025.07d); "float" or "double" for one
 #   VSA_FILTERPLUGIN_JOBS=2        build parallelism (the machine is shared: 2 at most)
 set -euo pipefail
 t0=$(date +%s)
@@ -148,7 +151,7 @@ EOF
 
 # float: what MeshLab's own releases (2025.07) and Debian use; double: what pymeshlab bundles
 # (its MeshLab is built with MESHLAB_BUILD_WITH_DOUBLE_SCALAR=ON, version "2025.07d").
-read -r -a scalars <<< "${VSA_FILTERPLUGIN_SCALARS:-float}"
+read -r -a scalars <<< "${VSA_FILTERPLUGIN_SCALARS:-float double}"
 for scalar in "${scalars[@]}"; do
   case $scalar in
     float) build_tree float "$dir/build" ;;
@@ -158,10 +161,12 @@ for scalar in "${scalars[@]}"; do
 done
 ln -sfn "$ml_version" "$modern/current"
 
-echo "setup_filterplugin: ready in $(( $(date +%s) - t0 )) s"
+# One line per tree (the details are in its meshlab-build-info.txt); pass the directory to CMake as
+# -DVSA_FILTERPLUGIN_MESHLAB_DIR=<dir>[;<dir>] (scripts/build.sh does).
+trees=()
 for scalar in "${scalars[@]}"; do
-  build="$dir/build"; [ "$scalar" = double ] && build="$dir/build-double"
-  echo "  VSA_FILTERPLUGIN_MESHLAB_DIR=$([ "$scalar" = double ] && echo "$build" || echo "$dir")"
-  sed 's/^/    /' "$build/meshlab-build-info.txt"
-  echo "    built plugins: $(cd "$build/src/distrib/plugins" && ls | tr '\n' ' ')"
+  build="$modern/current/build"; [ "$scalar" = double ] && build="$modern/current/build-double"
+  trees+=("$(sed -n 's/^MESHLAB_VERSION=//p' "$build/meshlab-build-info.txt") ($scalar) in ${build#"$root"/}")
 done
+echo "setup_filterplugin: ready in $(( $(date +%s) - t0 )) s: MeshLab $(IFS=';'; echo "${trees[*]}" | sed 's/;/, /g')" \
+     "from Debian meshlab $deb_version"

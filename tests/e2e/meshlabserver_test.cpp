@@ -148,6 +148,8 @@ void ExpectGoodApproximation(const ScriptCase &c, int k, bool inputClosed)
     // A region becomes at least one triangle; far fewer faces than the input.
     EXPECT_GE(out.FN(), k);
     EXPECT_LT(out.FN(), regions.FN() / 4);
+    // The approximation carries the region colours too: one per region.
+    EXPECT_EQ(DistinctFaceColors(out).size(), size_t(k));
     // The input layer: one colour per region, quality = region index in [0, k).
     EXPECT_EQ(DistinctFaceColors(regions).size(), size_t(k));
     std::set<int> regionIds;

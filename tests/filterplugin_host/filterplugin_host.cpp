@@ -533,9 +533,15 @@ int main(int argc, char *argv[])
             md.mm()->cm.svn = int(vcg::tri::UpdateSelection<CMeshO>::VertexCount(md.mm()->cm));
             md.mm()->cm.sfn = int(vcg::tri::UpdateSelection<CMeshO>::FaceCount(md.mm()->cm));
         }
-        QJsonObject values;
-        for (const auto &kv : result) values[QString::fromStdString(kv.first)] = ToJson(kv.second);
+        // The values, and their QVariant types: pymeshlab turns only some of them into Python
+        // values (int, double, float, bool, Point2m/3m, Box3m, Matrix33m/44m, Eigen::VectorXd).
+        QJsonObject values, types;
+        for (const auto &kv : result) {
+            values[QString::fromStdString(kv.first)] = ToJson(kv.second);
+            types[QString::fromStdString(kv.first)] = kv.second.typeName();
+        }
         run["output"] = values;
+        run["output_types"] = types;
         run["postcondition_mask"] = qint64(postConditionMask);
     } catch (const MLException &e) {
         md.setBusy(false);

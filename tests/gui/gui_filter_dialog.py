@@ -96,7 +96,8 @@ def ocr(png, work_dir, scale=2, origin=(0, 0), crop=None, threshold=None):
     in particular) read much better that way. Cropping to one panel keeps tesseract from
     mixing the lines of neighbouring panels. A `threshold` (percent) turns the image black and
     white, which reads the white-on-blue row of the selected layer better."""
-    scaled = Path(work_dir) / f"ocr_input_x{scale}.png"
+    scaled = Path(work_dir) / "ocr" / f"input_x{scale}.png"   # what tesseract read last
+    scaled.parent.mkdir(exist_ok=True)
     command = ["convert", str(png)]
     if crop:
         x, y, w, h = crop
@@ -143,7 +144,6 @@ class Session:
         self.xvfb = None
         self.meshlab = None
         self.shots = []
-        self.step = 0
 
     # -- processes
     def start_xvfb(self):
@@ -404,9 +404,8 @@ def run(session):
 
     # 5. Number of proxies: click its field (right of the label), select all, type k, Tab.
     k = args.k
-    label = find_line(lines, PARAMETERS[0])
-    label_words = len(PARAMETERS[0].split())
-    after = [w for w in label.words[label_words:]]
+    label = find_line(lines, PARAMETERS[0]) or find_line(ocr(shot, session.artifacts, 3, origin), PARAMETERS[0])
+    after = label.words[len(PARAMETERS[0].split()):]   # the value, when it was read
     field = after[-1].center if after else (round(label.right + 100), label.center[1])
     session.click(field)
     session.x("xdotool", "key", "ctrl+a")
@@ -496,7 +495,7 @@ def main():
 
     artifacts = Path(args.artifacts)
     artifacts.mkdir(parents=True, exist_ok=True)
-    for old in list(artifacts.glob("*.png")) + list(artifacts.glob("*.txt")):
+    for old in list(artifacts.glob("*.png")) + list(artifacts.glob("*.txt")) + list(artifacts.glob("ocr/*")):
         old.unlink()
 
     # ctest's timeout sends SIGTERM: turn it into an exception so MeshLab and Xvfb are stopped.

@@ -6,6 +6,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <functional>
+#include <numeric>
 #include <limits>
 #include <set>
 
@@ -317,19 +319,26 @@ TEST(Meshing, IslandAndRingRegionsOnAFlatSquare)
         // Flat in, flat out: the output tiles the same square, without overlap or gap.
         EXPECT_NEAR(vsa_test::SurfaceArea(run.output), 4.0, 1e-5);
         if (polygonal) {
-            // Every outline edge separates two regions or is on the border.
+            // A faux edge never separates two regions, and the faux edges group the faces into
+            // exactly one polygon per disc (a cut ring is two or more polygons, never lost).
+            std::vector<int> group(run.out.face.size());
+            std::iota(group.begin(), group.end(), 0);
+            std::function<int(int)> root = [&](int x) { return group[x] == x ? x : group[x] = root(group[x]); };
             for (const auto &f : run.out.face)
                 for (int i = 0; i < 3; ++i) {
-                    if (f.IsF(i)) continue;
-                    const TMesh::FaceType *g = nullptr;
+                    if (!f.IsF(i)) continue;
                     for (const auto &h : run.out.face)
                         for (int j = 0; j < 3; ++j)
-                            if (&h != &f && h.cV(j) == f.cV((i + 1) % 3) && h.cV((j + 1) % 3) == f.cV(i)) g = &h;
-                    if (g) {
-                        EXPECT_NE(run.report.faceRegion[vcg::tri::Index(run.out, f)],
-                                  run.report.faceRegion[vcg::tri::Index(run.out, *g)]);
-                    }
+                            if (&h != &f && h.cV(j) == f.cV((i + 1) % 3) && h.cV((j + 1) % 3) == f.cV(i)) {
+                                const int a = int(vcg::tri::Index(run.out, f)), b = int(vcg::tri::Index(run.out, h));
+                                EXPECT_EQ(run.report.faceRegion[a], run.report.faceRegion[b]);
+                                EXPECT_TRUE(h.IsF(j));
+                                group[root(a)] = root(b);
+                            }
                 }
+            std::set<int> polygons;
+            for (int f = 0; f < int(run.out.face.size()); ++f) polygons.insert(root(f));
+            EXPECT_EQ(int(polygons.size()), run.report.cells);
         }
     }
 }

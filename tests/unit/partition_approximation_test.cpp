@@ -47,16 +47,49 @@ TEST(PartitionApproximation, CubeGetsOneRegionPerSideFromEverySeeding)
     TMesh m;
     vsa_test::MakeTessellatedCube(m, 5);
     const IndexedMesh im = BuildIndexedMesh(m);
-    for (MetricKind metric : {MetricKind::L21, MetricKind::L2})
-        for (SeedingMethod init : {SeedingMethod::Farthest, SeedingMethod::Hierarchical, SeedingMethod::Random})
-            for (uint64_t seed : {1u, 2u, 3u, 42u, 1234u}) {
-                SCOPED_TRACE(testing::Message() << "metric " << int(metric) << " init " << int(init) << " seed " << seed);
-                ApproximationParam p = Params(6, metric, init, seed);
-                // Random seeds can put two proxies on one side and none on another; only
-                // teleporting a proxy gets Lloyd out of that minimum.
-                p.teleport = init == SeedingMethod::Random;
-                ExpectOneRegionPerSide(im, Approximate(im, p));
+    for (SeedingMethod init : {SeedingMethod::Farthest, SeedingMethod::Hierarchical, SeedingMethod::Random})
+        for (uint64_t seed : {1u, 2u, 3u, 42u, 1234u}) {
+            SCOPED_TRACE(testing::Message() << "init " << int(init) << " seed " << seed);
+            ApproximationParam p = Params(6, MetricKind::L21, init, seed);
+            // Random seeds can put two proxies on one side and none on another; only
+            // teleporting a proxy gets Lloyd out of that minimum.
+            p.teleport = init == SeedingMethod::Random;
+            ExpectOneRegionPerSide(im, Approximate(im, p));
+        }
+}
+
+TEST(PartitionApproximation, CubeUnderL2GetsOneRegionPerSide)
+{
+    TMesh m;
+    vsa_test::MakeTessellatedCube(m, 5);
+    const IndexedMesh im = BuildIndexedMesh(m);
+    for (SeedingMethod init : {SeedingMethod::Farthest, SeedingMethod::Hierarchical, SeedingMethod::Random})
+        for (uint64_t seed : {1u, 2u, 3u, 42u, 1234u}) {
+            SCOPED_TRACE(testing::Message() << "init " << int(init) << " seed " << seed);
+            ApproximationParam p = Params(6, MetricKind::L2, init, seed);
+            p.teleport = init == SeedingMethod::Random;
+            ExpectOneRegionPerSide(im, Approximate(im, p));
+        }
+}
+
+TEST(PartitionApproximation, FoldedSheetUnderL2GetsOneRegionPerPlane)
+{
+    TMesh m;
+    vsa_test::MakeFoldedSheet(m, 6);
+    const IndexedMesh im = BuildIndexedMesh(m);
+    for (SeedingMethod init : {SeedingMethod::Farthest, SeedingMethod::Hierarchical})
+        for (uint64_t seed : {1u, 2u, 3u, 42u, 1234u}) {
+            SCOPED_TRACE(testing::Message() << "init " << int(init) << " seed " << seed);
+            const ApproximationResult r = Approximate(im, Params(2, MetricKind::L2, init, seed));
+            ASSERT_TRUE(r.ok) << r.error;
+            for (int f = 0; f < im.FaceCount(); ++f) {
+                const bool onFloor = im.positions[im.faces[f][0]][2] == 0 && im.positions[im.faces[f][1]][2] == 0 &&
+                                     im.positions[im.faces[f][2]][2] == 0;
+                ASSERT_EQ(r.partition.faceRegion[f], r.partition.faceRegion[onFloor ? 0 : im.FaceCount() - 1]);
+                ASSERT_NE(r.partition.faceRegion[0], r.partition.faceRegion[im.FaceCount() - 1]);
             }
+            EXPECT_LT(r.energy, 1e-20);
+        }
 }
 
 TEST(PartitionApproximation, EveryFaceLabelledAndEveryRegionConnected)

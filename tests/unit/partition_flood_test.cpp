@@ -150,7 +150,7 @@ TEST(PartitionFlood, LabelledFacesAreWalls)
     EXPECT_GT(freed, 0);
 }
 
-TEST(PartitionFlood, GrowRegionStealsOnlyWhatItFitsBetterAndNeverASeed)
+TEST(PartitionFlood, GrowRegionStealsOnlyWhatItFitsBetterAndEmptiesNoRegion)
 {
     const IndexedMesh im = vsa_test::LoadCgalMesh("fandisk.off");
     const FaceGeometry g = ComputeFaceGeometry(im, false);
@@ -160,22 +160,28 @@ TEST(PartitionFlood, GrowRegionStealsOnlyWhatItFitsBetterAndNeverASeed)
     int worst = -1;
     for (int f = 0; f < im.FaceCount(); ++f)
         if (!s.IsSeed(f) && (worst < 0 || s.faceError[f] > s.faceError[worst])) worst = f;
+    std::vector<int> size(20, 0);
+    for (int r : s.partition.faceRegion) ++size[r];
     PartitionWorkspace<L21Metric> ws;
-    const int added = GrowRegion(im, metric, g, s, worst, ws);
+    const int added = GrowRegion(im, metric, g, s, worst, size, ws);
     EXPECT_EQ(added, 20);
     EXPECT_EQ(s.seeds[added], worst);
     EXPECT_EQ(ws.grown.front(), worst);
+    ASSERT_EQ(ws.grown.size(), ws.grownFrom.size());
+    std::vector<int> count(21, 0);
     for (int f = 0; f < im.FaceCount(); ++f) {
+        ++count[s.partition.faceRegion[f]];
         if (s.partition.faceRegion[f] != added) {
             EXPECT_EQ(s.partition.faceRegion[f], before.partition.faceRegion[f]);
             continue;
         }
-        EXPECT_FALSE(before.IsSeed(f));
         if (f != worst) {
             EXPECT_LT(s.faceError[f], before.faceError[f]);
         }
         EXPECT_EQ(s.faceError[f], metric.Error(f, s.partition.proxies[added]));
     }
+    EXPECT_EQ(count, size);  // kept up to date
+    for (int c : count) EXPECT_GT(c, 0);
     // The energies follow the faces that moved, and the total can only fall.
     double total = 0;
     for (int f = 0; f < im.FaceCount(); ++f) total += s.faceError[f];

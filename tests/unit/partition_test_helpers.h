@@ -32,6 +32,26 @@ inline void MakePlanarGrid(TMesh &m, int n, const vcg::Point3f &origin, const vc
     BuildFromLists(m, coords, tris);
 }
 
+/// A sheet folded at a right angle: an n x n grid on the plane z = 0 (x in [-1, 0]) and one on
+/// the plane x = 0 (z in [0, 1]), sharing the fold's vertices (y in [0, 1]).
+inline void MakeFoldedSheet(TMesh &m, int n)
+{
+    std::vector<vcg::Point3f> coords;
+    std::vector<vcg::Point3i> tris;
+    for (int j = 0; j <= n; ++j)
+        for (int i = 0; i <= 2 * n; ++i) {
+            const float y = float(j) / n;
+            coords.push_back(i <= n ? vcg::Point3f(float(i) / n - 1, y, 0) : vcg::Point3f(0, y, float(i - n) / n));
+        }
+    const auto at = [n](int i, int j) { return j * (2 * n + 1) + i; };
+    for (int j = 0; j < n; ++j)
+        for (int i = 0; i < 2 * n; ++i) {
+            tris.emplace_back(at(i, j), at(i + 1, j), at(i + 1, j + 1));
+            tris.emplace_back(at(i, j), at(i + 1, j + 1), at(i, j + 1));
+        }
+    BuildFromLists(m, coords, tris);
+}
+
 /// `count` tessellated cubes (MakeTessellatedCube(n)) side by side along x, 3 apart.
 inline void MakeCubeRow(TMesh &m, int count, int n)
 {

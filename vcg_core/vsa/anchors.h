@@ -32,24 +32,27 @@ struct AnchorSet
 
 namespace detail {
 
-/// Positions in a cell loop (indices into s.cellLoop[c]) of its anchors, in loop order.
-inline std::vector<int> AnchorPositionsInLoop(const MeshingSurface &s, const std::vector<char> &isAnchor, int c)
+/// Positions in cell c's loop (indices into s.cellLoop[c]) of the vertices that pass `test`.
+template <class VertexTest>
+std::vector<int> LoopPositionsWhere(const MeshingSurface &s, int c, VertexTest test)
 {
     std::vector<int> at;
     const std::vector<int> &loop = s.cellLoop[c];
     for (int i = 0; i < int(loop.size()); ++i)
-        if (isAnchor[loop[i]]) at.push_back(i);
+        if (test(loop[i])) at.push_back(i);
     return at;
 }
 
-/// The same, once the anchors are chosen.
+/// Positions of the anchors in cell c's loop, in loop order: while choosing them...
+inline std::vector<int> AnchorPositionsInLoop(const MeshingSurface &s, const std::vector<char> &isAnchor, int c)
+{
+    return LoopPositionsWhere(s, c, [&](int v) { return isAnchor[v] != 0; });
+}
+
+/// ...and once they are chosen.
 inline std::vector<int> AnchorPositionsInLoop(const MeshingSurface &s, int c, const AnchorSet &anchors)
 {
-    std::vector<int> at;
-    const std::vector<int> &loop = s.cellLoop[c];
-    for (int i = 0; i < int(loop.size()); ++i)
-        if (anchors.anchorOfVertex[loop[i]] >= 0) at.push_back(i);
-    return at;
+    return LoopPositionsWhere(s, c, [&](int v) { return anchors.anchorOfVertex[v] >= 0; });
 }
 
 /// Distance from p to the line through a and b, or to a when a and b coincide.
@@ -295,10 +298,12 @@ inline std::vector<std::vector<int>> CellPolygons(const MeshingSurface &s, const
 /// travels far enough to fold the output triangles around it. An anchor inside a single
 /// region (where cells of a region that is not a disc meet, away from the border) stays put:
 /// the cut is ours, not the partition's, and flattening it onto the one plane would flatten
-/// a closed region into a pancake. Without `project`, anchors stay at their input vertices.
+/// a closed region into a pancake. Without `project`, anchors stay at their input vertices,
+/// and so do anchors on surface vertices flagged in `pinned` (empty, or one flag per vertex).
 inline std::vector<Point3d> PlaceAnchors(const MeshingSurface &s, const AnchorSet &anchors,
                                          const std::vector<std::vector<int>> &polygons,
-                                         const std::vector<Proxy> &proxies, bool project, double maxMove)
+                                         const std::vector<Proxy> &proxies, bool project, double maxMove,
+                                         const std::vector<char> &pinned = {})
 {
     const int anchorCount = anchors.Count();
     std::vector<Point3d> placed(anchorCount);
@@ -320,6 +325,7 @@ inline std::vector<Point3d> PlaceAnchors(const MeshingSurface &s, const AnchorSe
     std::vector<int> regions;
     for (int a = 0; a < anchorCount; ++a) {
         const int v = anchors.vertexOfAnchor[a];
+        if (!pinned.empty() && pinned[v]) continue;
         regions.clear();
         for (int k = s.vertexFaceOffset[v]; k < s.vertexFaceOffset[v + 1]; ++k)
             regions.push_back(s.faceRegion[s.vertexFaces[k]]);

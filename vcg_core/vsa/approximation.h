@@ -50,7 +50,7 @@ struct ApproximationParam
     /// When the iterations converge, move the proxy whose merge with a neighbour costs least to
     /// the worst region, and iterate again while that keeps lowering the energy.
     bool teleport = false;
-    int relaxations = 2;  ///< Lloyd iterations settling new proxies during seeding and Split
+    int relaxations = 1;  ///< Lloyd iterations settling new proxies during seeding and Split
 };
 
 /// What the partitioning produced; ok == false means nothing else is filled in but `error`.
@@ -210,15 +210,20 @@ public:
         return done;
     }
 
-    /// Adds a proxy at the face with the largest error, growing its region locally and refitting
-    /// the regions it took faces from (the others wait for the next Run). Returns the new
-    /// region's index (the last).
+    /// The paper's region insertion: a proxy at the worst face of the region with the largest
+    /// energy, grown locally, and the regions it took faces from refitted (the others wait for
+    /// the next Run). Returns the new region's index (the last).
     int AddProxy()
     {
         RequireInitialized("AddProxy");
         if (ProxyCount() >= mesh_.FaceCount())
             throw std::logic_error("Cannot add a proxy: every face already has its own.");
-        const int region = WithMetric([&](const auto &metric, auto &ws) { return AddRegionAt(metric, ws, WorstFace(-1)); });
+        std::vector<int> regionSize(ProxyCount(), 0);
+        for (int r : state_.partition.faceRegion) ++regionSize[r];
+        int worst = -1;
+        for (int r = 0; r < ProxyCount(); ++r)
+            if (regionSize[r] > 1 && (worst < 0 || state_.regionEnergy[r] > state_.regionEnergy[worst])) worst = r;
+        const int region = WithMetric([&](const auto &metric, auto &ws) { return AddRegionAt(metric, ws, WorstFace(worst)); });
         StartTracking(false);
         return region;
     }
@@ -392,12 +397,12 @@ private:
         return h;
     }
 
-    /// The non-seed face with the largest error, in `region` or anywhere (-1); ties: lowest index.
+    /// The non-seed face of `region` with the largest error (ties: lowest index), or -1.
     int WorstFace(int region) const
     {
         int worst = -1;
         for (int f = 0; f < mesh_.FaceCount(); ++f) {
-            if (region >= 0 && state_.partition.faceRegion[f] != region) continue;
+            if (state_.partition.faceRegion[f] != region) continue;
             if (state_.IsSeed(f)) continue;
             if (worst < 0 || state_.faceError[f] > state_.faceError[worst]) worst = f;
         }
@@ -415,12 +420,13 @@ private:
         return false;
     }
 
-    /// Grows a new region at `face`, then refits it and the regions it took faces from: a
-    /// region whose seed kept it alive on the far side of the new one moves its seed back.
+    /// Grows a new region at `face`, then refits it and the regions it took faces from.
     template <class Metric>
     int AddRegionAt(const Metric &metric, PartitionWorkspace<Metric> &ws, int face)
     {
-        const int region = GrowRegion(mesh_, metric, geometry_, state_, face, ws);
+        std::vector<int> regionSize(ProxyCount(), 0);
+        for (int r : state_.partition.faceRegion) ++regionSize[r];
+        const int region = GrowRegion(mesh_, metric, geometry_, state_, face, regionSize, ws);
         std::vector<char> refit(ProxyCount(), 0);
         refit[region] = 1;
         for (int r : ws.grownFrom) refit[r] = 1;

@@ -111,7 +111,11 @@ inline void SplitVerticesPerFan(MeshingSurface &s)
     }
     std::vector<char> used(s.positions.size(), 0);
     int inputVerticesUsed = 0;
-    for (int v : sourceVertex) inputVerticesUsed += !used[v]++;
+    for (int v : sourceVertex)
+        if (!used[v]) {
+            used[v] = 1;
+            ++inputVerticesUsed;
+        }
     s.splitVertices = int(positions.size()) - inputVerticesUsed;
     s.positions.swap(positions);
     s.sourceVertex.swap(sourceVertex);
@@ -128,7 +132,8 @@ class DiscGrower
 {
 public:
     explicit DiscGrower(MeshingSurface &s)
-        : s_(s), inSlot_(s.positions.size(), 0), hop_(s.faces.size(), -1), queued_(s.faces.size(), 0)
+        : s_(s), inSlot_(s.positions.size(), 0), hop_(s.faces.size(), -1), queued_(s.faces.size(), 0),
+          slotOfFace_(s.faces.size(), -1)
     {
     }
 
@@ -136,7 +141,7 @@ public:
     /// Returns whether it had to be cut into more than one cell.
     bool Decompose(const std::vector<int> &component, int region)
     {
-        std::vector<int> added = Grow({component.front()}, component);
+        const std::vector<int> added = GrowSeveral({component.front()}, component).front();
         if (added.size() == component.size()) {
             Commit(added, region);
             return false;
@@ -163,10 +168,10 @@ private:
     std::vector<char> queued_;           ///< scratch: face allowed in the current growth
     std::vector<int> slotOfFace_;        ///< per face with faceCell == kGrowing: its slot
 
-    bool Allowed(int f) const { return f >= 0 && queued_[f] && s_.faceCell[f] == kFree; }
+    static constexpr int kFree = -1;     ///< faceCell of a face in no cell yet
+    static constexpr int kGrowing = -2;  ///< faceCell of a face in a disc being grown
 
-    static constexpr int kFree = -1;
-    static constexpr int kGrowing = -2;
+    bool Allowed(int f) const { return f >= 0 && queued_[f] && s_.faceCell[f] == kFree; }
 
     bool CanJoin(int f, int slot) const
     {
@@ -192,15 +197,9 @@ private:
         disc.push_back(f);
     }
 
-    std::vector<int> Grow(const std::vector<int> &seeds, const std::vector<int> &piece)
-    {
-        return GrowSeveral(seeds, piece).front();
-    }
-
     /// Grows one disc per seed (at most two), taking turns one face at a time, breadth first.
     std::vector<std::vector<int>> GrowSeveral(const std::vector<int> &seeds, const std::vector<int> &piece)
     {
-        if (slotOfFace_.size() != s_.faces.size()) slotOfFace_.assign(s_.faces.size(), -1);
         for (int f : piece) queued_[f] = 1;
         std::vector<std::vector<int>> discs(seeds.size());
         std::vector<std::deque<int>> fronts(seeds.size());

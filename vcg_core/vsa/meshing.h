@@ -27,20 +27,25 @@ namespace vsa {
 
 struct MeshingParam
 {
-    /// Chord subdivision: a chain gets a new anchor at its vertex farthest from the chord
-    /// while d * sin(angle between the two proxies) / |chord| exceeds this (sin = 1 on the
-    /// mesh border). Smaller keeps more of each region's outline; 0 keeps every bend.
+    /// Chord subdivision (the paper's criterion): a chain between two anchors gets a new
+    /// anchor at its vertex farthest from the chord while d * sin(angle between the two
+    /// proxies) / |chord| exceeds this; sin counts as 1 past 90 degrees, on the mesh border
+    /// and along cuts inside a region. Smaller keeps more of each region's outline (more
+    /// anchors); 0 keeps every bend. 0.2 was measured as the knee of anchors against
+    /// Hausdorff distance on CGAL's sample meshes.
     double chordThreshold = 0.2;
     /// Move each anchor to the average of its projections on the planes of its regions.
     bool projectAnchors = true;
     /// Cap on that move, as a fraction of the shortest chord at the anchor.
     double maxAnchorMove = 0.5;
-    /// Flag the edges inside a region faux (F0/F1/F2), so each region shows as one polygon.
+    /// Flag the edges inside a region faux (F0/F1/F2), so each region shows as one polygon
+    /// (one per disc when the region had to be cut into discs).
     bool polygonal = false;
     /// Count self-intersecting face pairs of the output in the report (a grid pass, O(F)).
     bool checkSelfIntersections = true;
-    /// Passes that add anchors where the output intersects itself (each one a grid pass and
-    /// a new triangulation); 0 keeps the first output as it is.
+    /// Passes that add anchors where the output folds (a region's polygon crosses itself on
+    /// its plane) or intersects itself, and pin anchors whose projection made it intersect;
+    /// each is a new triangulation and a grid pass. 0 keeps the first output as it is.
     int repairRounds = 4;
 };
 
@@ -63,15 +68,19 @@ struct MeshingReport
     int chordAnchors = 0;        ///< from the chord criterion
     int loopAnchors = 0;         ///< completing loops to three anchors
     int duplicateChordAnchors = 0;  ///< splitting chains that joined the same two anchors
-    int repairAnchors = 0;          ///< added where an earlier pass's output intersected itself
+    int repairAnchors = 0;          ///< added where an earlier pass's output folded or intersected itself
+    int pinnedAnchors = 0;          ///< left unprojected where projecting made the output intersect itself
     int repairRounds = 0;           ///< passes it took to reach the output
     int steinerVertices = 0;
 
     int ignoredFaces = 0;   ///< input faces with a repeated vertex (no area)
     int splitVertices = 0;  ///< extra output-side vertices from splitting non-manifold input vertices
 
-    std::vector<int> faceRegion;    ///< per output face: region index
-    std::vector<int> vertexSource;  ///< per output vertex: IndexedMesh vertex it comes from (-1: none)
+    std::vector<int> faceRegion;  ///< per output face: region index
+    /// Per output vertex: the IndexedMesh vertex it comes from. Output vertices 0 .. anchors-1
+    /// are the anchors; the rest are the extra vertices of fans, on the input vertex they
+    /// sit on, or -1 for one at a cell's centroid.
+    std::vector<int> vertexSource;
 
     MeshValidity validity;  ///< of the output mesh as written
 
@@ -83,7 +92,8 @@ struct MeshingReport
           << anchors << " anchors";
         if (steinerVertices) s << ", " << steinerVertices << " extra vertices";
         s << ")";
-        if (repairAnchors) s << ", " << repairAnchors << " anchors added against self-intersections";
+        if (repairAnchors) s << ", " << repairAnchors << " anchors added against folds and self-intersections";
+        if (pinnedAnchors) s << ", " << pinnedAnchors << " anchors left unprojected against self-intersections";
         s << "; triangulated by flooding " << regionsByFlooding << ", ear clipping " << regionsByEarClipping;
         if (regionsWithSteinerVertex) s << ", fan around an extra vertex " << regionsWithSteinerVertex;
         if (regionsCut) s << "; " << regionsCut << " regions cut into discs";
@@ -137,7 +147,12 @@ struct MeshingPass
     std::vector<std::array<int, 3>> triangles;
     std::vector<int> triangleCell;
     std::vector<CellMethod> cellMethod;
-    OutputRegistry regionOutlines;  ///< chords between different regions or on the border
+    std::vector<Point3d> cellNormal;  ///< per cell: normal of the plane it was triangulated on
+    /// Every cell's outline. Polygonal output keeps these edges real: a region cut into discs
+    /// (a ring, a closed or holed region) has no single simple polygon, so it shows, and saves
+    /// to OFF/OBJ, as one polygon per disc rather than being lost by the polygon export.
+    OutputRegistry cellOutlines;
+    int pinnedAnchors = 0;          ///< anchors kept at their input vertex
 };
 
 /// Anchors, placement and triangulation. Positions are rounded to the output's scalar type
@@ -145,13 +160,15 @@ struct MeshingPass
 /// will be written, since a triangle fine in double can be flat in a float mesh.
 template <class CoordType>
 MeshingPass RunMeshingPass(const MeshingSurface &s, const std::vector<Proxy> &proxies, const MeshingParam &param,
-                           const std::vector<char> &requiredAnchors)
+                           const std::vector<char> &requiredAnchors, const std::vector<char> &pinnedAnchors)
 {
     MeshingPass pass;
     pass.anchors = SelectAnchors(s, proxies, param.chordThreshold, requiredAnchors);
     const AnchorSet &anchors = pass.anchors;
     pass.polygons = CellPolygons(s, anchors);
-    pass.positions = PlaceAnchors(s, anchors, pass.polygons, proxies, param.projectAnchors, param.maxAnchorMove);
+    pass.positions = PlaceAnchors(s, anchors, pass.polygons, proxies, param.projectAnchors, param.maxAnchorMove,
+                                  pinnedAnchors);
+    for (int v : anchors.vertexOfAnchor) pass.pinnedAnchors += pinnedAnchors[v];
     for (Point3d &p : pass.positions) p = Point3d::Construct(CoordType::Construct(p));
     pass.vertexSource = anchors.vertexOfAnchor;
 
@@ -159,12 +176,10 @@ MeshingPass RunMeshingPass(const MeshingSurface &s, const std::vector<Proxy> &pr
     OutputRegistry registry;
     for (int c = 0; c < s.CellCount(); ++c) {
         const std::vector<int> &polygon = pass.polygons[c];
-        const std::vector<int> at = AnchorPositionsInLoop(s, c, anchors);
         for (size_t k = 0; k < polygon.size(); ++k) {
             const int a = polygon[k], b = polygon[(k + 1) % polygon.size()];
             registry.AddEdge(a, b);
-            const int across = s.cellLoopOther[c][at[k]];
-            if (across < 0 || s.cellRegion[across] != s.cellRegion[c]) pass.regionOutlines.AddEdge(a, b);
+            pass.cellOutlines.AddEdge(a, b);
         }
     }
     CellFlooding flooding(s);
@@ -180,68 +195,106 @@ MeshingPass RunMeshingPass(const MeshingSurface &s, const std::vector<Proxy> &pr
             pass.triangleCell.push_back(c);
         }
         pass.cellMethod.push_back(cell.method);
+        pass.cellNormal.push_back(cell.planeNormal);
     }
     return pass;
 }
 
-/// Self-intersecting face pairs of a pass's output.
-inline std::vector<std::pair<int, int>> PassIntersections(const MeshingPass &pass)
+/// What is wrong with a pass's output: pairs of faces that intersect, and pairs of edges of
+/// a cell's polygon that cross on the cell's plane (a chord cutting across another: the
+/// polygon is not simple, and its triangulation folds, even where no face pair intersects).
+struct PassDefects
 {
+    std::vector<std::pair<int, int>> intersections;  ///< output face pairs
+    struct Crossing
+    {
+        int cell, edge, otherEdge;  ///< polygon edge k joins polygon vertices k and k + 1
+    };
+    std::vector<Crossing> crossings;
+    size_t Count() const { return intersections.size() + crossings.size(); }
+};
+
+inline PassDefects FindDefects(const MeshingPass &pass)
+{
+    PassDefects defects;
     IndexedMesh output;
     output.positions = pass.positions;
     output.faces = pass.triangles;
-    return SelfIntersectingPairs(output);
+    defects.intersections = SelfIntersectingPairs(output);
+    for (int c = 0; c < int(pass.polygons.size()); ++c)
+        for (const auto &[i, j] : CrossingPolygonEdges(pass.polygons[c], pass.positions, pass.cellNormal[c]))
+            defects.crossings.push_back({c, i, j});
+    return defects;
 }
 
-/// Asks for more anchors where a pass's output intersects itself: on each offending
-/// triangle, the chord-edge whose chain strays farthest from it relative to its length (or
-/// the cell's worst chain, when none of the triangle's chords has vertices to spare) gets its
-/// farthest vertex as an anchor. Returns how many were added.
-inline int RequestAnchorsAgainstIntersections(const MeshingSurface &s, const MeshingPass &pass,
-                                              const std::vector<std::pair<int, int>> &intersections,
-                                              std::vector<char> &requiredAnchors)
+/// The vertex of the chain under polygon edge k of cell c that is farthest from its chord
+/// (as a loop position), and that distance over the chord's length; -1 and -1 when the
+/// chain is a single edge.
+inline std::pair<int, double> ChainSplit(const MeshingSurface &s, const MeshingPass &pass, int c, int k)
 {
+    const std::vector<int> at = AnchorPositionsInLoop(s, c, pass.anchors);
+    const std::vector<int> &loop = s.cellLoop[c];
+    const int n = int(at.size()), m = int(loop.size());
+    const int from = at[k], to = k + 1 < n ? at[k + 1] : at[0] + m;
+    double distance = 0;
+    const int split = FarthestFromChord(s, c, from, to, &distance);
+    const double chord = (s.positions[loop[to % m]] - s.positions[loop[from]]).Norm();
+    return {split, split < 0 ? -1.0 : distance / std::max(chord, std::numeric_limits<double>::min())};
+}
+
+/// Changes what the next pass does about this pass's defects. The usual causes are a chord
+/// that strays from its chain and an anchor moved by projection. Crossing polygon edges get
+/// an anchor each, at their chain's farthest vertex. On each face of an intersecting pair,
+/// the chord-edge whose chain strays farthest relative to its length (or the cell's worst
+/// chain, when none of the face's chords has vertices to spare) gets one too, and the face's
+/// anchors are pinned to their input vertices. Returns how many anchors were added or pinned.
+inline int RespondToDefects(const MeshingSurface &s, const MeshingPass &pass, const PassDefects &defects,
+                            std::vector<char> &requiredAnchors, std::vector<char> &pinnedAnchors)
+{
+    int changes = 0;
+    auto require = [&](int c, int loopPosition) {
+        const int v = s.cellLoop[c][loopPosition % int(s.cellLoop[c].size())];
+        if (!requiredAnchors[v]) {
+            requiredAnchors[v] = 1;
+            ++changes;
+        }
+    };
+    for (const PassDefects::Crossing &crossing : defects.crossings)
+        for (int k : {crossing.edge, crossing.otherEdge}) {
+            const int split = ChainSplit(s, pass, crossing.cell, k).first;
+            if (split >= 0) require(crossing.cell, split);
+        }
+
     std::vector<int> offending;
-    for (const auto &[f, g] : intersections) offending.push_back(f), offending.push_back(g);
+    for (const auto &[f, g] : defects.intersections) offending.push_back(f), offending.push_back(g);
     std::sort(offending.begin(), offending.end());
     offending.erase(std::unique(offending.begin(), offending.end()), offending.end());
-
-    int added = 0;
     for (int f : offending) {
         const int c = pass.triangleCell[f];
-        const std::vector<int> &loop = s.cellLoop[c];
         const std::vector<int> &polygon = pass.polygons[c];
-        const std::vector<int> at = AnchorPositionsInLoop(s, c, pass.anchors);
-        const int n = int(polygon.size()), m = int(loop.size());
-        auto chainRatio = [&](int k, int *split) {
-            const int from = at[k], to = k + 1 < n ? at[k + 1] : at[0] + m;
-            double distance = 0;
-            *split = FarthestFromChord(s, c, from, to, &distance);
-            const double chord = (s.positions[loop[to % m]] - s.positions[loop[from]]).Norm();
-            return *split < 0 ? -1.0 : distance / std::max(chord, std::numeric_limits<double>::min());
-        };
-        int best = -1;
-        double bestRatio = -1;
-        for (int i = 0; i < 3; ++i) {
-            const int a = pass.triangles[f][i], b = pass.triangles[f][(i + 1) % 3];
-            for (int k = 0; k < n; ++k) {
-                int split = -1;
-                if (polygon[k] != a || polygon[(k + 1) % n] != b) continue;
-                const double ratio = chainRatio(k, &split);
-                if (ratio > bestRatio) bestRatio = ratio, best = split;
+        const int n = int(polygon.size());
+        std::pair<int, double> best(-1, -1.0);
+        for (int i = 0; i < 3; ++i)
+            for (int k = 0; k < n; ++k)
+                if (polygon[k] == pass.triangles[f][i] && polygon[(k + 1) % n] == pass.triangles[f][(i + 1) % 3]) {
+                    const std::pair<int, double> split = ChainSplit(s, pass, c, k);
+                    if (split.second > best.second) best = split;
+                }
+        for (int k = 0; k < n && best.first < 0; ++k) {
+            const std::pair<int, double> split = ChainSplit(s, pass, c, k);
+            if (split.second > best.second) best = split;
+        }
+        if (best.first >= 0) require(c, best.first);
+        for (int a : pass.triangles[f]) {
+            if (a >= pass.anchors.Count()) continue;  // an extra vertex: never projected
+            const int v = pass.anchors.vertexOfAnchor[a];
+            if (!pinnedAnchors[v]) {
+                pinnedAnchors[v] = 1;
+                ++changes;
             }
         }
-        for (int k = 0; k < n && best < 0; ++k) {
-            int split = -1;
-            const double ratio = chainRatio(k, &split);
-            if (ratio > bestRatio) bestRatio = ratio, best = split;
-        }
-        if (best >= 0 && !requiredAnchors[loop[best % m]]) {
-            requiredAnchors[loop[best % m]] = 1;
-            ++added;
-        }
     }
-    return added;
+    return changes;
 }
 
 }  // namespace detail
@@ -286,29 +339,28 @@ MeshingReport BuildApproximatingMesh(const IndexedMesh &in, const Partition &par
     const std::vector<Proxy> proxies = detail::UsableProxies(s, partition.proxies);
 
     if (cb) cb(20, "VSA meshing: anchors and triangulation");
-    // Passes: each one adds anchors where the previous output intersected itself; the pass
-    // with the fewest intersections (the earliest on ties) is the output.
-    std::vector<char> requiredAnchors(s.VertexCount(), 0);
-    detail::MeshingPass pass = detail::RunMeshingPass<CoordType>(s, proxies, param, requiredAnchors);
-    std::vector<std::pair<int, int>> intersections;
-    if (param.repairRounds > 0) intersections = detail::PassIntersections(pass);
-    size_t fewest = intersections.size();
+    // Passes: each one responds to the defects of the previous one (see RespondToDefects);
+    // the pass with the fewest defects (the earliest on ties) is the output.
+    std::vector<char> requiredAnchors(s.VertexCount(), 0), pinnedAnchors(s.VertexCount(), 0);
+    detail::MeshingPass pass = detail::RunMeshingPass<CoordType>(s, proxies, param, requiredAnchors, pinnedAnchors);
+    detail::PassDefects defects;
+    if (param.repairRounds > 0) defects = detail::FindDefects(pass);
+    size_t fewest = defects.Count();
     detail::MeshingPass latest;
-    for (int round = 1, requested = 0; round <= param.repairRounds && !intersections.empty(); ++round) {
-        if (cb) cb(20 + 50 * round / (param.repairRounds + 1), "VSA meshing: anchors against self-intersections");
+    for (int round = 1; round <= param.repairRounds && defects.Count() > 0; ++round) {
+        if (cb) cb(20 + 50 * round / (param.repairRounds + 1), "VSA meshing: repairing folds and self-intersections");
         const detail::MeshingPass &previous = round == 1 ? pass : latest;
-        const int added = detail::RequestAnchorsAgainstIntersections(s, previous, intersections, requiredAnchors);
-        if (added == 0) break;
-        requested += added;
-        latest = detail::RunMeshingPass<CoordType>(s, proxies, param, requiredAnchors);
-        intersections = detail::PassIntersections(latest);
-        if (intersections.size() < fewest) {
-            fewest = intersections.size();
+        if (detail::RespondToDefects(s, previous, defects, requiredAnchors, pinnedAnchors) == 0) break;
+        latest = detail::RunMeshingPass<CoordType>(s, proxies, param, requiredAnchors, pinnedAnchors);
+        defects = detail::FindDefects(latest);
+        if (defects.Count() < fewest) {
+            fewest = defects.Count();
             pass = latest;
-            report.repairAnchors = requested;
             report.repairRounds = round;
         }
     }
+    report.repairAnchors = pass.anchors.required;
+    report.pinnedAnchors = param.projectAnchors ? pass.pinnedAnchors : 0;
     const AnchorSet &anchors = pass.anchors;
     report.anchors = anchors.Count();
     report.junctionAnchors = anchors.junctions;
@@ -346,7 +398,7 @@ MeshingReport BuildApproximatingMesh(const IndexedMesh &in, const Partition &par
         for (int i = 0; i < 3; ++i) face->V(i) = &out.vert[t[i]];
         if (param.polygonal)
             for (int i = 0; i < 3; ++i)
-                if (!pass.regionOutlines.HasEdge(t[i], t[(i + 1) % 3])) face->SetF(i);
+                if (!pass.cellOutlines.HasEdge(t[i], t[(i + 1) % 3])) face->SetF(i);
         ++face;
     }
     UpdateBounding<OutMeshType>::Box(out);

@@ -14,6 +14,7 @@
 #include <cstring>
 #include <limits>
 #include <numeric>
+#include <utility>
 #include <vector>
 
 #if defined(_MSC_VER) && !defined(__clang__)
@@ -108,8 +109,9 @@ private:
 
     static uint64_t Key(double error)
     {
+        const double positive = error + 0.0;  // -0.0 becomes +0.0, whose bits sort first
         uint64_t key;
-        std::memcpy(&key, &error, sizeof key);
+        std::memcpy(&key, &positive, sizeof key);
         return key;
     }
     static bool FaceLater(const Entry &a, const Entry &b)
@@ -181,7 +183,7 @@ struct PartitionWorkspace
     {
         double queuedError;  ///< best candidate queued for this face during a flood
         int queuedRegion;
-        int region;          ///< label during a flood, -1 while free
+        int region;          ///< label during a flood: -1 while free; between floods >= 0 (a wall)
         std::array<int, 3> neighbors;
         typename Metric::FaceData data;
     };
@@ -194,36 +196,28 @@ struct PartitionWorkspace
     std::vector<int> grownFrom;  ///< the region each of those faces was taken from
 };
 
-/// Labels every face whose faceRegion is -1 by growing the regions from their seed faces with
-/// one global priority queue, as in the paper: the queue holds (face, region) candidates keyed
-/// by the face's error to the region's proxy; the best candidate is popped, labels its face if
-/// still free, and offers that face's free neighbours to the same region. Each face is labelled
-/// once and every region grows connected. Faces already labelled are walls, so a subset of the
-/// regions can be re-flooded inside their own faces. seeds[r] = -1 leaves region r out.
-/// Candidates pop in (error, face, region) order. A candidate that does not come before one
-/// already queued for the same face could never label it, so it is not queued at all: the
-/// labels are those of the textbook flood, with less work.
-/// Returns how many free faces no seed could reach (none when every component has a seed).
+namespace detail {
+
 template <class Metric>
-int FloodRegions(const IndexedMesh &mesh, const Metric &metric, const std::vector<Proxy> &proxies,
-                 const std::vector<int> &seeds, std::vector<int> &faceRegion, PartitionWorkspace<Metric> &ws)
+void PrepareNodes(const IndexedMesh &mesh, const Metric &metric, PartitionWorkspace<Metric> &ws)
+{
+    if (int(ws.nodes.size()) == mesh.FaceCount()) return;
+    ws.nodes.resize(mesh.FaceCount());
+    for (int f = 0; f < mesh.FaceCount(); ++f) {
+        ws.nodes[f].region = 0;
+        ws.nodes[f].neighbors = mesh.neighbors[f];
+        ws.nodes[f].data = metric.Data(f);
+    }
+}
+
+/// The flood proper, on nodes already marked: free ones with region -1 and no queued error.
+/// `seeds` lists (region, seed face) pairs by increasing region.
+template <class Metric>
+void Flood(const Metric &metric, const std::vector<Proxy> &proxies, const std::vector<std::pair<int, int>> &seeds,
+           PartitionWorkspace<Metric> &ws)
 {
     using Node = typename PartitionWorkspace<Metric>::Node;
-    const int faceCount = mesh.FaceCount();
     auto &nodes = ws.nodes;
-    if (int(nodes.size()) != faceCount) {
-        nodes.resize(faceCount);
-        for (int f = 0; f < faceCount; ++f) {
-            nodes[f].neighbors = mesh.neighbors[f];
-            nodes[f].data = metric.Data(f);
-        }
-    }
-    int freeFaces = 0;
-    for (int f = 0; f < faceCount; ++f) {
-        nodes[f].queuedError = std::numeric_limits<double>::infinity();
-        nodes[f].region = faceRegion[f];
-        freeFaces += faceRegion[f] < 0;
-    }
     FloodQueue &queue = ws.queue;
     queue.Clear();
     const auto offer = [&](int face, int region) {
@@ -237,25 +231,75 @@ int FloodRegions(const IndexedMesh &mesh, const Metric &metric, const std::vecto
             queue.Push({error, face, region});
         }
     };
-
-    for (int r = 0; r < int(seeds.size()); ++r)
-        if (seeds[r] >= 0) {
-            nodes[seeds[r]].region = r;
-            --freeFaces;
-        }
-    for (int r = 0; r < int(seeds.size()); ++r)
-        if (seeds[r] >= 0)
-            for (int g : nodes[seeds[r]].neighbors) offer(g, r);
+    for (const auto &seed : seeds) nodes[seed.second].region = seed.first;
+    for (const auto &seed : seeds)
+        for (int g : nodes[seed.second].neighbors) offer(g, seed.first);
     while (!queue.Empty()) {
         const FloodQueue::Candidate c = queue.Pop();
         Node &node = nodes[c.face];
         if (node.region >= 0) continue;
         node.region = c.region;
-        --freeFaces;
         for (int g : node.neighbors) offer(g, c.region);
     }
-    for (int f = 0; f < faceCount; ++f) faceRegion[f] = nodes[f].region;
-    return freeFaces;
+}
+
+/// Copies a flooded face's label out; a face no seed reached keeps -1 there and becomes a wall.
+template <class Node>
+bool TakeLabel(Node &node, int &label)
+{
+    label = node.region;
+    if (node.region >= 0) return true;
+    node.region = 0;
+    return false;
+}
+
+}  // namespace detail
+
+/// Labels every face whose faceRegion is -1 by growing the regions from their seed faces with
+/// one global priority queue, as in the paper: the queue holds (face, region) candidates keyed
+/// by the face's error to the region's proxy; the best candidate is popped, labels its face if
+/// still free, and offers that face's free neighbours to the same region. Each face is labelled
+/// once and every region grows connected. Faces already labelled are walls. seeds[r] = -1
+/// leaves region r out. Candidates pop in (error, face, region) order. A candidate that does
+/// not come before one already queued for the same face could never label it, so it is not
+/// queued at all: the labels are those of the textbook flood, with less work.
+/// Returns how many free faces no seed could reach (none when every component has a seed).
+template <class Metric>
+int FloodRegions(const IndexedMesh &mesh, const Metric &metric, const std::vector<Proxy> &proxies,
+                 const std::vector<int> &seeds, std::vector<int> &faceRegion, PartitionWorkspace<Metric> &ws)
+{
+    detail::PrepareNodes(mesh, metric, ws);
+    for (int f = 0; f < mesh.FaceCount(); ++f) {
+        ws.nodes[f].queuedError = std::numeric_limits<double>::infinity();
+        ws.nodes[f].region = faceRegion[f];
+    }
+    std::vector<std::pair<int, int>> regionSeeds;
+    for (int r = 0; r < int(seeds.size()); ++r)
+        if (seeds[r] >= 0) regionSeeds.emplace_back(r, seeds[r]);
+    detail::Flood(metric, proxies, regionSeeds, ws);
+    int unreached = 0;
+    for (int f = 0; f < mesh.FaceCount(); ++f) unreached += !detail::TakeLabel(ws.nodes[f], faceRegion[f]);
+    return unreached;
+}
+
+/// The same flood confined to `faces`: only they are relabelled, from the (region, seed face)
+/// pairs `seeds` (by increasing region, seeds among `faces`); every other face is a wall. Costs
+/// O(|faces| log |faces|), not a pass over the mesh. Returns how many of `faces` no seed
+/// reached (they keep -1 in faceRegion).
+template <class Metric>
+int FloodWithin(const IndexedMesh &mesh, const Metric &metric, const std::vector<Proxy> &proxies,
+                const std::vector<std::pair<int, int>> &seeds, const std::vector<int> &faces,
+                std::vector<int> &faceRegion, PartitionWorkspace<Metric> &ws)
+{
+    detail::PrepareNodes(mesh, metric, ws);
+    for (int f : faces) {
+        ws.nodes[f].queuedError = std::numeric_limits<double>::infinity();
+        ws.nodes[f].region = -1;
+    }
+    detail::Flood(metric, proxies, seeds, ws);
+    int unreached = 0;
+    for (int f : faces) unreached += !detail::TakeLabel(ws.nodes[f], faceRegion[f]);
+    return unreached;
 }
 
 /// Measures the regions flagged in `only` (every region when it is empty): each face's error to
@@ -332,26 +376,30 @@ Proxy FitFace(const Metric &metric, const FaceGeometry &g, int face)
     return metric.Fit(m, {g.centroid[face], g.normal[face]});
 }
 
-/// Adds a region seeded at `seed` (which must not be another region's seed) with the proxy of
-/// the seed face alone. It takes the seed, then every face reachable from it through faces that
-/// its proxy fits strictly better than their current one: a partial re-partition touching only
-/// the faces the new proxy can steal, O(stolen) instead of a full flood. Seeds of other regions
-/// are never taken, so no region empties; the other proxies are not refitted, and a region that
-/// lost a band of faces may be left in pieces until the next flood. The taken faces are listed
-/// in ws.grown, the regions they came from in ws.grownFrom. Returns the new region's index.
+/// Adds a region seeded at `seed` (not the last face of its region) with the proxy of the
+/// seed face alone. It takes the seed, then every face reachable from it through faces that its
+/// proxy fits strictly better than their current one: a partial re-partition touching only the
+/// faces the new proxy can steal, O(stolen) instead of a full flood. It never takes a region's
+/// last face, so no region empties; regionSize (faces per region) follows, with the new region
+/// appended. The taken faces are listed in ws.grown, the regions they came from in
+/// ws.grownFrom: the caller refits those (which also re-picks their seeds, possibly taken). A
+/// region that lost a band of faces may be left in pieces until the next flood.
 template <class Metric>
 int GrowRegion(const IndexedMesh &mesh, const Metric &metric, const FaceGeometry &g, RegionState &s, int seed,
-               PartitionWorkspace<Metric> &ws)
+               std::vector<int> &regionSize, PartitionWorkspace<Metric> &ws)
 {
     const int region = s.RegionCount();
     const Proxy proxy = FitFace(metric, g, seed);
     s.partition.proxies.push_back(proxy);
     s.seeds.push_back(seed);
     s.regionEnergy.push_back(0);
+    regionSize.push_back(0);
 
     auto &faceRegion = s.partition.faceRegion;
     const auto take = [&](int f, double error) {
         s.regionEnergy[faceRegion[f]] -= s.faceError[f];
+        --regionSize[faceRegion[f]];
+        ++regionSize[region];
         ws.grownFrom.push_back(faceRegion[f]);
         faceRegion[f] = region;
         s.faceError[f] = error;
@@ -372,7 +420,7 @@ int GrowRegion(const IndexedMesh &mesh, const Metric &metric, const FaceGeometry
         for (int next : mesh.neighbors[f]) {
             if (next < 0 || ws.visitMark[next] == stamp) continue;
             ws.visitMark[next] = stamp;  // its errors cannot change during this growth: look once
-            if (s.IsSeed(next)) continue;
+            if (regionSize[faceRegion[next]] == 1) continue;
             const double error = metric.Error(next, proxy);
             if (error < s.faceError[next]) take(next, error);
         }

@@ -6,6 +6,7 @@
 #define VSA_REGION_TRIANGULATION_H
 
 #include <vsa/anchors.h>
+#include <vsa/mesh_validity.h>
 
 #include <algorithm>
 #include <array>
@@ -69,6 +70,7 @@ struct CellTriangulation
     int steinerVertex = -1;
     Point3d steinerPosition;
     int steinerSourceVertex = -1;  ///< surface vertex the extra vertex sits on, or -1
+    Point3d planeNormal;           ///< normal of the plane the polygon was clipped on
 };
 
 /// The report's discrete flooding: every vertex of a cell takes the colour of its nearest
@@ -99,8 +101,18 @@ public:
         return triples;
     }
 
-    /// The interior vertex of the last flooded cell farthest from its anchors, or -1.
-    int DeepestInteriorVertex() const { return deepest_; }
+    /// Vertices of the last flooded cell, deepest inside first: interior vertices by their
+    /// distance to the anchors, farthest first, then the boundary vertices.
+    std::vector<int> VerticesDeepestFirst() const
+    {
+        std::vector<int> vertices(touched_);
+        std::sort(vertices.begin(), vertices.end(), [&](int a, int b) {
+            if (onLoop_[a] != onLoop_[b]) return onLoop_[a] < onLoop_[b];
+            if (distance_[a] != distance_[b]) return distance_[a] > distance_[b];
+            return a < b;
+        });
+        return vertices;
+    }
 
     /// Clears what the last cell left in the per-vertex arrays.
     void Reset()
@@ -115,7 +127,6 @@ private:
     std::vector<double> distance_;
     std::vector<char> onLoop_;
     std::vector<int> touched_;
-    int deepest_ = -1;
 
     void Set(int v, int color, double distance)
     {
@@ -156,12 +167,10 @@ private:
         using Item = std::pair<double, int>;
         std::priority_queue<Item, std::vector<Item>, std::greater<Item>> queue;
         for (int v : s_.cellLoop[c]) queue.push({distance_[v], v});
-        deepest_ = -1;
         while (!queue.empty()) {
             const auto [d, u] = queue.top();
             queue.pop();
             if (d > distance_[u]) continue;  // stale entry
-            if (!onLoop_[u] && (deepest_ < 0 || d > distance_[deepest_])) deepest_ = u;
             for (int k = s_.vertexFaceOffset[u]; k < s_.vertexFaceOffset[u + 1]; ++k) {
                 const int f = s_.vertexFaces[k];
                 if (s_.faceCell[f] != c) continue;
@@ -179,6 +188,36 @@ private:
 
 namespace detail {
 
+/// The polygon's vertices in 2D coordinates on the plane through the origin with `normal`.
+inline std::vector<Point2d> PolygonOnPlane(const std::vector<int> &polygon, const std::vector<Point3d> &positions,
+                                           const Point3d &normal)
+{
+    Point3d u = std::abs(normal[0]) < 0.6 ? Point3d(1, 0, 0) : Point3d(0, 1, 0);
+    u = (u - normal * (u * normal)).Normalize();
+    const Point3d v = normal ^ u;
+    std::vector<Point2d> plane;
+    for (int a : polygon) plane.push_back(Point2d(positions[a] * u, positions[a] * v));
+    return plane;
+}
+
+/// Pairs (i, j), i < j, of edges of a polygon (edge i joins vertices i and i + 1) that are
+/// not neighbours yet meet on the plane: a polygon that is not simple on its plane cannot be
+/// triangulated there without folds.
+inline std::vector<std::pair<int, int>> CrossingPolygonEdges(const std::vector<int> &polygon,
+                                                             const std::vector<Point3d> &positions,
+                                                             const Point3d &normal)
+{
+    const std::vector<Point2d> plane = PolygonOnPlane(polygon, positions, normal);
+    const int n = int(plane.size());
+    std::vector<std::pair<int, int>> crossings;
+    for (int i = 0; i < n; ++i)
+        for (int j = i + 2; j < n; ++j) {
+            if (i == 0 && j == n - 1) continue;  // neighbours through vertex 0
+            if (SegmentsMeet2d(plane[i], plane[(i + 1) % n], plane[j], plane[(j + 1) % n])) crossings.emplace_back(i, j);
+        }
+    return crossings;
+}
+
 /// Ear clipping of one anchor polygon, on the plane of its cell. Geometrically sound ears
 /// (convex, no other polygon vertex in the triangle) come first, and among them those the
 /// flooding found; then flooding ears, convex first; then any convex ear; then anything, so
@@ -193,13 +232,7 @@ public:
         : polygon_(polygon), positions_(positions), flooding_(flooding), registry_(registry)
     {
         const int n = int(polygon.size());
-        Point3d u = std::abs(normal[0]) < 0.6 ? Point3d(1, 0, 0) : Point3d(0, 1, 0);
-        u = (u - normal * (u * normal)).Normalize();
-        const Point3d v = normal ^ u;
-        for (int k = 0; k < n; ++k) {
-            const Point3d &p = positions[polygon[k]];
-            plane_.push_back(Point2d(p * u, p * v));
-        }
+        plane_ = PolygonOnPlane(polygon, positions, normal);
         double twiceArea = 0;
         for (int k = 0; k < n; ++k) twiceArea += plane_[k] ^ plane_[(k + 1) % n];
         orientation_ = twiceArea < 0 ? -1.0 : 1.0;
@@ -250,13 +283,11 @@ public:
     static double SineOfSmallestAngle(const Point3d &a, const Point3d &b, const Point3d &c)
     {
         const double ab = (b - a).Norm(), bc = (c - b).Norm(), ca = (a - c).Norm();
-        const double twiceArea = ((b - a) ^ (c - a)).Norm();
-        const double longest = std::max({ab, bc, ca});
-        if (!(longest > 0)) return 0;
-        // The smallest angle faces the shortest edge; sin = 2A / (product of the other two).
         const double shortest = std::min({ab, bc, ca});
-        const double others = ab * bc * ca / shortest;
-        return others > 0 ? twiceArea / others : 0;
+        if (!(shortest > 0)) return 0;  // two corners at one place
+        // The smallest angle faces the shortest edge; sin = 2A / (product of the other two).
+        const double twiceArea = ((b - a) ^ (c - a)).Norm();
+        return twiceArea / (ab * bc * ca / shortest);
     }
 
 private:
@@ -299,6 +330,9 @@ private:
     }
 };
 
+/// A fan whose thinnest triangle has at least this sine of its smallest angle is good enough.
+constexpr double kGoodFan = 0.05;
+
 }  // namespace detail
 
 /// Triangulates one cell's anchor polygon (anchor indices in loop order, cell on the left)
@@ -327,6 +361,7 @@ inline CellTriangulation TriangulateCell(const MeshingSurface &s, int c, const s
     }
     if (normal.Norm() > 1e-6 * area) normal.Normalize();
     else normal = proxy.normal * (proxy.normal * normal < 0 ? -1.0 : 1.0);
+    result.planeNormal = normal;
 
     bool allFromFlooding = false;
     detail::EarClipper clipper(polygon, anchorPositions, normal, triples, registry);
@@ -334,13 +369,35 @@ inline CellTriangulation TriangulateCell(const MeshingSurface &s, int c, const s
         result.method = allFromFlooding ? CellMethod::Flooding : CellMethod::EarClipping;
     } else {
         // A fan from a new vertex adds only new edges and new faces, so it always fits. The
-        // vertex stays on the input surface, at the cell's vertex deepest inside it.
+        // vertex stays on the input surface: the cell's vertex deepest inside it whose fan has
+        // no sliver, else the vertex with the least bad fan, unless the cell's centroid does
+        // better (a cell all of whose vertices lie on the lines of its chords).
         result.method = CellMethod::SteinerFan;
         result.triangles.clear();
         result.steinerVertex = nextVertex;
-        result.steinerSourceVertex = flooding.DeepestInteriorVertex();
-        result.steinerPosition = result.steinerSourceVertex >= 0 ? s.positions[result.steinerSourceVertex]
-                                                                 : centroid / (area > 0 ? area : 1.0);
+        auto fanQuality = [&](const Point3d &apex) {
+            double worst = 1;
+            for (size_t k = 0; k < polygon.size(); ++k)
+                worst = std::min(worst, detail::EarClipper::SineOfSmallestAngle(
+                                            anchorPositions[polygon[k]],
+                                            anchorPositions[polygon[(k + 1) % polygon.size()]], apex));
+            return worst;
+        };
+        double bestQuality = -1;
+        for (int v : flooding.VerticesDeepestFirst()) {
+            const double quality = fanQuality(s.positions[v]);
+            if (quality > bestQuality) {
+                bestQuality = quality;
+                result.steinerSourceVertex = v;
+                result.steinerPosition = s.positions[v];
+            }
+            if (bestQuality >= detail::kGoodFan) break;
+        }
+        const Point3d cellCentroid = centroid / (area > 0 ? area : 1.0);
+        if (fanQuality(cellCentroid) > bestQuality) {
+            result.steinerSourceVertex = -1;
+            result.steinerPosition = cellCentroid;
+        }
         for (size_t k = 0; k < polygon.size(); ++k)
             result.triangles.push_back({polygon[k], polygon[(k + 1) % polygon.size()], nextVertex});
     }

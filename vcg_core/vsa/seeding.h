@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <limits>
 #include <random>
 #include <vector>
 
@@ -30,7 +31,7 @@ struct SeedingGoal
     double targetEnergy = 0;  ///< > 0: stop at the first relaxed partition whose energy is at most this
     /// Lloyd iterations after each round (farthest: each time the count doubles). Seeding
     /// always ends with at least one, so that its partition is a flood's: regions connected.
-    int relaxations = 2;
+    int relaxations = 1;
 };
 
 /// Reproducible random numbers. std::mt19937_64's sequence is fixed by the C++ standard; the
@@ -54,52 +55,6 @@ private:
     std::mt19937_64 engine_;
 };
 
-/// Faces by decreasing error (ties: lowest index first), to pick where a proxy goes next.
-/// Entries go stale when their face changes error or becomes a seed; stale entries are dropped
-/// when they reach the top, so updates are a push and never a search.
-class WorstFaceQueue
-{
-public:
-    void Rebuild(const RegionState &s)
-    {
-        heap_.clear();
-        for (int f = 0; f < int(s.faceError.size()); ++f)
-            if (!s.IsSeed(f)) heap_.push_back({s.faceError[f], f});
-        std::make_heap(heap_.begin(), heap_.end(), PopsLater);
-    }
-
-    void Push(double error, int face)
-    {
-        heap_.push_back({error, face});
-        std::push_heap(heap_.begin(), heap_.end(), PopsLater);
-    }
-
-    /// The worst current non-seed face that `accept` takes, or -1; faces refused are dropped.
-    template <class Accept>
-    int PopWorst(const RegionState &s, Accept accept)
-    {
-        while (!heap_.empty()) {
-            std::pop_heap(heap_.begin(), heap_.end(), PopsLater);
-            const Entry e = heap_.back();
-            heap_.pop_back();
-            if (e.error == s.faceError[e.face] && !s.IsSeed(e.face) && accept(e.face)) return e.face;
-        }
-        return -1;
-    }
-
-private:
-    struct Entry
-    {
-        double error;
-        int face;
-    };
-    static bool PopsLater(const Entry &a, const Entry &b)
-    {
-        return a.error != b.error ? a.error < b.error : a.face > b.face;
-    }
-    std::vector<Entry> heap_;
-};
-
 namespace detail {
 
 inline void Progress(CallBackPos *cb, int done, int total)
@@ -111,6 +66,134 @@ template <class Metric>
 void Relax(const IndexedMesh &mesh, const Metric &metric, RegionState &s, PartitionWorkspace<Metric> &ws, int iterations)
 {
     for (int i = 0; i < iterations; ++i) LloydIteration(mesh, metric, s, ws);
+}
+
+/// The faces of each region, kept exact, so that choosing, refitting and re-flooding a few
+/// regions costs their size rather than a pass over the mesh.
+class RegionFaces
+{
+public:
+    void Rebuild(const RegionState &s)
+    {
+        lists_.assign(s.RegionCount(), {});
+        const auto &faceRegion = s.partition.faceRegion;
+        for (int f = 0; f < int(faceRegion.size()); ++f) lists_[faceRegion[f]].push_back(f);
+        size.resize(lists_.size());
+        for (size_t r = 0; r < lists_.size(); ++r) size[r] = int(lists_[r].size());
+        slot_.assign(lists_.size(), -1);
+    }
+
+    const std::vector<int> &Of(int region) const { return lists_[region]; }
+
+    /// Lists again the faces of `regions` (distinct, including any appended since) after they
+    /// were relabelled among themselves; `faces` are all of theirs.
+    void Relist(const RegionState &s, const std::vector<int> &regions, const std::vector<int> &faces)
+    {
+        lists_.resize(s.RegionCount());
+        for (int r : regions) lists_[r].clear();
+        for (int f : faces) lists_[s.partition.faceRegion[f]].push_back(f);
+        size.resize(s.RegionCount());
+        for (int r : regions) size[r] = int(lists_[r].size());
+    }
+
+    /// Per region, its position among the regions of a pass over a few of them (or -1).
+    std::vector<int> &Slots(int regionCount)
+    {
+        if (int(slot_.size()) < regionCount) slot_.resize(regionCount, -1);
+        return slot_;
+    }
+
+    std::vector<int> size;  ///< faces per region; GrowRegion keeps it current while lists lag
+
+private:
+    std::vector<std::vector<int>> lists_;
+    std::vector<int> slot_;
+};
+
+/// Refits the proxies of `regions` to their faces among `faces` in one pass, then measures
+/// those faces (errors, region energies, seeds).
+template <class Metric>
+void RefitWithin(const Metric &metric, RegionState &s, RegionFaces &lists, const std::vector<int> &regions,
+                 const std::vector<int> &faces)
+{
+    std::vector<int> &slot = lists.Slots(s.RegionCount());
+    std::vector<typename Metric::Moments> moments;
+    for (size_t i = 0; i < regions.size(); ++i) {
+        slot[regions[i]] = int(i);
+        moments.push_back(metric.EmptyMoments(s.partition.proxies[regions[i]].point));
+    }
+    const auto &faceRegion = s.partition.faceRegion;
+    for (int f : faces) metric.Add(moments[slot[faceRegion[f]]], f);
+    std::vector<double> seedError(regions.size(), std::numeric_limits<double>::infinity());
+    for (size_t i = 0; i < regions.size(); ++i) {
+        Proxy &proxy = s.partition.proxies[regions[i]];
+        proxy = metric.Fit(moments[i], proxy);
+        s.regionEnergy[regions[i]] = 0;
+    }
+    for (int f : faces) {
+        const int r = faceRegion[f], i = slot[r];
+        const double e = metric.Error(f, s.partition.proxies[r]);
+        s.faceError[f] = e;
+        s.regionEnergy[r] += e;
+        if (e < seedError[i] || (e == seedError[i] && f < s.seeds[r])) {
+            seedError[i] = e;
+            s.seeds[r] = f;
+        }
+    }
+    for (int r : regions) slot[r] = -1;
+}
+
+/// The region with the largest score (ties: lowest index) among those with a face besides
+/// their seed, or -1.
+template <class Score>
+int BestRegion(const RegionState &s, const RegionFaces &lists, Score score)
+{
+    int best = -1;
+    double bestScore = 0;
+    for (int r = 0; r < s.RegionCount(); ++r) {
+        if (lists.size[r] < 2) continue;
+        const double value = score(r);
+        if (best < 0 || value > bestScore) {
+            best = r;
+            bestScore = value;
+        }
+    }
+    return best;
+}
+
+/// The paper's region insertion, relaxed locally: a new proxy at the worst face of `region`,
+/// grown by GrowRegion; then one Lloyd iteration confined to the new region and the regions it
+/// took faces from (refit, flood within their faces, refit). Like a global relaxation after
+/// each insertion it lets the next insertion see where the error now is, and it leaves those
+/// regions connected; unlike one, it costs the size of the regions touched.
+template <class Metric>
+void InsertInRegion(const IndexedMesh &mesh, const Metric &metric, const FaceGeometry &g, RegionState &s,
+                    PartitionWorkspace<Metric> &ws, RegionFaces &lists, int region)
+{
+    int worst = -1;
+    for (int f : lists.Of(region)) {
+        if (s.IsSeed(f)) continue;
+        if (worst < 0 || s.faceError[f] > s.faceError[worst] || (s.faceError[f] == s.faceError[worst] && f < worst))
+            worst = f;
+    }
+    const int added = GrowRegion(mesh, metric, g, s, worst, lists.size, ws);
+    std::vector<int> touched = ws.grownFrom;
+    std::sort(touched.begin(), touched.end());
+    touched.erase(std::unique(touched.begin(), touched.end()), touched.end());
+    std::vector<int> faces;  // the robbed regions' faces before the growth: the new one's too
+    for (int r : touched) faces.insert(faces.end(), lists.Of(r).begin(), lists.Of(r).end());
+    touched.push_back(added);
+    std::vector<int> before(faces.size());
+    for (size_t i = 0; i < faces.size(); ++i) before[i] = s.partition.faceRegion[faces[i]];
+
+    RefitWithin(metric, s, lists, touched, faces);
+    std::vector<std::pair<int, int>> seeds;
+    for (int r : touched) seeds.emplace_back(r, s.seeds[r]);
+    if (FloodWithin(mesh, metric, s.partition.proxies, seeds, faces, s.partition.faceRegion, ws) > 0)
+        for (size_t i = 0; i < faces.size(); ++i)  // a piece cut off from every seed: as it was
+            if (s.partition.faceRegion[faces[i]] < 0) s.partition.faceRegion[faces[i]] = before[i];
+    RefitWithin(metric, s, lists, touched, faces);
+    lists.Relist(s, touched, faces);
 }
 
 /// One region per connected component, seeded at a random face of it, with that face's proxy.
@@ -157,42 +240,6 @@ void AddRandomSeeds(const Metric &metric, const FaceGeometry &g, RegionState &s,
     }
 }
 
-/// Splits `count` new proxies among the regions in proportion to their energy (D'Hondt's
-/// highest-averages method; by face count when the energy is zero everywhere). A region gets at
-/// most one fewer than its face count, since its seed stays.
-inline std::vector<int> AllocateByEnergy(const RegionState &s, int count)
-{
-    const int regionCount = s.RegionCount();
-    std::vector<int> faces(regionCount, 0);
-    for (int r : s.partition.faceRegion) ++faces[r];
-    const bool byEnergy = s.Energy() > 0;
-    std::vector<double> weight(regionCount);
-    for (int r = 0; r < regionCount; ++r) weight[r] = byEnergy ? std::max(0.0, s.regionEnergy[r]) : double(faces[r]);
-    struct Bid
-    {
-        double quotient;
-        int region;
-    };
-    const auto losesTo = [](const Bid &a, const Bid &b) {
-        return a.quotient != b.quotient ? a.quotient < b.quotient : a.region > b.region;
-    };
-    std::vector<int> quota(regionCount, 0);
-    std::vector<Bid> bids;
-    for (int r = 0; r < regionCount; ++r)
-        if (faces[r] > 1) bids.push_back({weight[r], r});
-    std::make_heap(bids.begin(), bids.end(), losesTo);
-    for (int given = 0; given < count && !bids.empty(); ++given) {
-        std::pop_heap(bids.begin(), bids.end(), losesTo);
-        const int r = bids.back().region;
-        bids.pop_back();
-        if (++quota[r] < faces[r] - 1) {
-            bids.push_back({weight[r] / (quota[r] + 1), r});
-            std::push_heap(bids.begin(), bids.end(), losesTo);
-        }
-    }
-    return quota;
-}
-
 }  // namespace detail
 
 /// Random seeding: one proxy at a random face of every component, the others at distinct faces
@@ -216,71 +263,69 @@ void SeedRandomly(const IndexedMesh &mesh, const Metric &metric, const FaceGeome
     MeasureRegions(metric, s);
 }
 
-/// Farthest seeding: starts from a random face per component, then adds one proxy at a time at
-/// the face with the largest error, growing it locally (GrowRegion) instead of re-flooding the
-/// whole mesh, and relaxes only each time the proxy count doubles and at the end. Insertions
-/// cost O(faces stolen + log F), so thousands of proxies take a fraction of a second.
+/// Farthest seeding: starts from a random face per component, then adds one proxy at a time
+/// at the worst face of the region with the largest energy (the paper's insertion), growing it
+/// locally and refitting only the regions it touched, instead of re-flooding the whole mesh
+/// after each insertion; full Lloyd relaxations happen each time the proxy count doubles and
+/// at the end. An insertion costs about the size of the regions it touches, so thousands of
+/// proxies take a fraction of a second.
 template <class Metric>
 void SeedFarthest(const IndexedMesh &mesh, const Metric &metric, const FaceGeometry &g, RegionState &s,
                   const SeedingGoal &goal, SeedRandom &random, PartitionWorkspace<Metric> &ws, CallBackPos *cb = nullptr)
 {
     detail::StartOnePerComponent(mesh, metric, g, s, random);
-    WorstFaceQueue queue;
-    queue.Rebuild(s);
+    detail::RegionFaces faces;
+    faces.Rebuild(s);
     int nextRelaxation = 2 * s.RegionCount();
     bool flooded = false;
     const auto relax = [&](int iterations) {
         detail::Relax(mesh, metric, s, ws, iterations);
-        queue.Rebuild(s);
+        faces.Rebuild(s);
         nextRelaxation = 2 * s.RegionCount();
         flooded = iterations > 0;
         detail::Progress(cb, s.RegionCount(), goal.proxyCount);
     };
     while (s.RegionCount() < goal.proxyCount) {
-        // Unrelaxed, the energy only falls as proxies are added; relax to confirm a target met.
         if (goal.targetEnergy > 0 && s.Energy() <= goal.targetEnergy) {
-            if (!flooded) relax(std::max(1, goal.relaxations));
+            if (!flooded) relax(std::max(1, goal.relaxations));  // confirm on a flooded partition
             if (s.Energy() <= goal.targetEnergy) return;
         }
-        const int face = queue.PopWorst(s, [](int) { return true; });
-        if (face < 0) break;  // every face is a seed
-        GrowRegion(mesh, metric, g, s, face, ws);
+        const int region = detail::BestRegion(s, faces, [&](int r) { return s.regionEnergy[r]; });
+        if (region < 0) break;  // every face is a seed
+        detail::InsertInRegion(mesh, metric, g, s, ws, faces, region);
         flooded = false;
-        for (int f : ws.grown) queue.Push(s.faceError[f], f);
         if (s.RegionCount() >= nextRelaxation && s.RegionCount() < goal.proxyCount) relax(goal.relaxations);
     }
     if (!flooded) relax(std::max(1, goal.relaxations));
 }
 
-/// Hierarchical seeding: from a random face per component, rounds double the proxy count; a
-/// round spreads its new proxies over the regions in proportion to their energy, and puts each
-/// at the worst remaining face of its region, growing it locally so that the next one lands
-/// where the error still is; then relaxes. Seeds at the worst faces (rather than at arbitrary
-/// faces) keep CAD shapes out of the poor minima where a region straddles a sharp edge.
+/// Hierarchical seeding: from a random face per component, rounds double the proxy count and
+/// relax. A round spreads its proxies over the regions in proportion to their energy, by
+/// D'Hondt's highest averages on the energies as they fall: each proxy goes to the region
+/// whose energy divided by one plus the proxies it already got this round is largest, at its
+/// worst face (as in farthest seeding). Seeds at the worst faces, with shares that follow the
+/// error as it drops, keep CAD shapes out of the poor minima where a fixed share per region
+/// (CGAL's error diffusion) leaves a region straddling a sharp edge.
 template <class Metric>
 void SeedHierarchically(const IndexedMesh &mesh, const Metric &metric, const FaceGeometry &g, RegionState &s,
                         const SeedingGoal &goal, SeedRandom &random, PartitionWorkspace<Metric> &ws,
                         CallBackPos *cb = nullptr)
 {
     detail::StartOnePerComponent(mesh, metric, g, s, random);
-    WorstFaceQueue queue;
+    detail::RegionFaces faces;
     while (s.RegionCount() < goal.proxyCount) {
         if (goal.targetEnergy > 0 && s.Energy() <= goal.targetEnergy) return;
         const int roundSize = std::min(s.RegionCount(), goal.proxyCount - s.RegionCount());
-        std::vector<int> quota = detail::AllocateByEnergy(s, roundSize);
-        queue.Rebuild(s);
-        const auto hasQuota = [&](int f) {
-            const int r = s.partition.faceRegion[f];
-            return r < int(quota.size()) && quota[r] > 0;
-        };
-        int added = 0;
-        for (; added < roundSize; ++added) {
-            const int face = queue.PopWorst(s, hasQuota);
-            if (face < 0) break;  // the regions with quota lost their spare faces to new ones
-            --quota[s.partition.faceRegion[face]];
-            GrowRegion(mesh, metric, g, s, face, ws);
+        faces.Rebuild(s);
+        std::vector<int> given(s.RegionCount(), 0);
+        const auto share = [&](int r) { return s.regionEnergy[r] / (1 + given[r]); };
+        for (int added = 0; added < roundSize; ++added) {
+            const int region = detail::BestRegion(s, faces, share);
+            if (region < 0) break;  // every face is a seed
+            ++given[region];
+            detail::InsertInRegion(mesh, metric, g, s, ws, faces, region);
+            given.push_back(0);
         }
-        if (added == 0) break;  // cannot happen while a region has a spare face; never loop forever
         detail::Relax(mesh, metric, s, ws, std::max(1, goal.relaxations));
         detail::Progress(cb, s.RegionCount(), goal.proxyCount);
     }

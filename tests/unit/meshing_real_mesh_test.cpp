@@ -1,0 +1,93 @@
+// The meshing stage on CGAL's sample meshes, partitioned by our own VSA. The quick test runs
+// with the unit tests; the sweep is disabled by default (a minute or so):
+//   vsa_unit_tests --gtest_also_run_disabled_tests --gtest_filter='MeshingSweep.*'
+#include "meshing_test_util.h"
+#include "test_meshes.h"
+
+#include <vsa/approximation.h>
+#include <vsa/meshing.h>
+
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <cstdio>
+#include <set>
+#include <string>
+#include <vector>
+
+using namespace vcg::tri::vsa;
+using vsa_test::TMesh;
+
+namespace {
+
+struct SweepCase
+{
+    std::string mesh;
+    int k;
+    SeedingMethod init;
+};
+
+/// Partitions and meshes one case; checks what must hold whatever the geometry: the output
+/// is a manifold, oriented, closed where the input is, with the input's components and Euler
+/// characteristic, no degenerate or duplicate face, and no region lost.
+void CheckCase(const SweepCase &c, bool print)
+{
+    TMesh m;
+    std::string error;
+    if (!vsa_test::LoadMesh(m, vsa_test::CgalMesh(c.mesh), &error)) GTEST_SKIP() << c.mesh << ": " << error;
+    MeshDiagnostics diag;
+    const IndexedMesh im = BuildIndexedMesh(m, &diag);
+    const MeshValidity in = CheckMeshValidity(im, diag, false);
+    ApproximationParam ap;
+    ap.proxyCount = c.k;
+    ap.init = c.init;
+    const ApproximationResult partition = Approximate(im, ap);
+    ASSERT_TRUE(partition.ok) << partition.error;
+    TMesh out;
+    const auto start = std::chrono::steady_clock::now();
+    const MeshingReport r = BuildApproximatingMesh(im, partition.partition, MeshingParam(), out);
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    ASSERT_TRUE(r.ok) << r.error;
+    const MeshValidity &v = r.validity;
+    const std::string what = c.mesh + " k=" + std::to_string(c.k) + " init=" + std::to_string(int(c.init));
+    EXPECT_TRUE(v.manifold) << what << ": " << v.Summary();
+    EXPECT_TRUE(v.oriented) << what << ": " << v.Summary();
+    EXPECT_EQ(v.closed, in.closed) << what << ": " << v.Summary();
+    EXPECT_EQ(v.components, in.components) << what << ": " << v.Summary();
+    EXPECT_EQ(v.eulerCharacteristic, in.eulerCharacteristic) << what << ": " << v.Summary();
+    EXPECT_EQ(v.degenerateFaces, 0) << what << ": " << v.Summary();
+    EXPECT_EQ(v.duplicateFaces, 0) << what << ": " << v.Summary();
+    EXPECT_EQ(r.regions, partition.proxyCount) << what;
+    // The output's border runs along the input's: as many loops, on input border vertices.
+    const IndexedMesh output = BuildIndexedMesh(out);
+    EXPECT_EQ(vsa_test::BorderLoopCount(output), vsa_test::BorderLoopCount(im)) << what;
+    const std::set<int> inputBorder = vsa_test::BorderVertices(im);
+    for (int v : vsa_test::BorderVertices(output))
+        EXPECT_TRUE(inputBorder.count(r.vertexSource[output.sourceVertex[v]])) << what << ": output vertex " << v;
+    if (print)
+        std::printf("%-24s k=%-5d init=%d  anchors %5d  faces %5d  flooding %4d  ear %3d  fan %2d  cut %2d  repair %3d  "
+                    "self-intersections %3d  %.3f s\n",
+                    c.mesh.c_str(), c.k, int(c.init), r.anchors, v.faces, r.regionsByFlooding, r.regionsByEarClipping,
+                    r.regionsWithSteinerVertex, r.regionsCut, r.repairAnchors, v.selfIntersections, seconds);
+}
+
+}  // namespace
+
+TEST(MeshingRealMeshes, ClosedAndOpenMeshesStayValid)
+{
+    for (const SweepCase &c : {SweepCase{"fandisk.off", 60, SeedingMethod::Hierarchical},
+                               SweepCase{"holes.off", 60, SeedingMethod::Farthest},
+                               SweepCase{"knot1.off", 40, SeedingMethod::Random}})
+        CheckCase(c, false);
+}
+
+TEST(MeshingSweep, DISABLED_RealMeshes)
+{
+    const std::vector<std::string> meshes = {"fandisk.off", "blade.off",  "bunny00.off", "elephant.off",
+                                             "mech-holes-shark.off", "knot1.off", "holes.off",
+                                             "elephant-with-holes.off"};
+    for (const std::string &mesh : meshes)
+        for (int k : {20, 100, 500, 2000})
+            for (SeedingMethod init : {SeedingMethod::Random, SeedingMethod::Farthest, SeedingMethod::Hierarchical})
+                CheckCase({mesh, k, init}, true);
+}
