@@ -4,7 +4,6 @@
 
 #include <vcg/complex/append.h>
 
-#include <QFileInfo>
 
 #include <exception>
 #include <new>
@@ -92,7 +91,7 @@ bool FilterVsaPlugin::apply(MeshDocument &md, const RichParameterList &parameter
     vcg::tri::Append<CMeshO, CMeshO>::MeshCopy(output->cm, approximation);
     output->UpdateBoxAndNormals();
     if (settings.anchorLayer) {
-        MeshModel *anchorModel = md.addNewMesh("", QFileInfo(input->label()).completeBaseName() + " VSA anchors", false);
+        MeshModel *anchorModel = md.addNewMesh("", AnchorLayerName(input->label()), false);
         vcg::tri::Append<CMeshO, CMeshO>::MeshCopy(anchorModel->cm, anchors);
         anchorModel->UpdateBoxAndNormals();
     }

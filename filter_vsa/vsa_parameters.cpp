@@ -1,16 +1,6 @@
 #include "vsa_parameters.h"
 
-// The MeshLab API this build targets is chosen by CMake (filter_vsa/CMakeLists.txt,
-// filter_vsa/FilterPlugin.cmake); only the header layout differs for this file.
-#if !defined(VSA_MESHLAB_FILTERPLUGIN_API)
-#error "VSA_MESHLAB_FILTERPLUGIN_API must be defined by the build: 0 for MeshLab 2020.09, 1 for FilterPlugin"
-#elif VSA_MESHLAB_FILTERPLUGIN_API
-#include <common/ml_document/cmesh.h>
-#include <common/parameters/rich_parameter_list.h>
-#else
-#include <common/filter_parameter/rich_parameter_list.h>
-#include <common/ml_mesh_type.h>
-#endif
+#include "meshlab_headers.h"
 
 #include <algorithm>
 #include <cmath>

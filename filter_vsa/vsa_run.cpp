@@ -1,12 +1,6 @@
 #include "vsa_run.h"
 
-#if !defined(VSA_MESHLAB_FILTERPLUGIN_API)
-#error "VSA_MESHLAB_FILTERPLUGIN_API must be defined by the build: 0 for MeshLab 2020.09, 1 for FilterPlugin"
-#elif VSA_MESHLAB_FILTERPLUGIN_API
-#include <common/ml_document/cmesh.h>
-#else
-#include <common/ml_mesh_type.h>
-#endif
+#include "meshlab_headers.h"
 
 #include <vcg/complex/allocate.h>
 

@@ -10,7 +10,8 @@ set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 mesh=$(realpath "${1:-$root/resources/meshes/fandisk.off}")
 script=$(realpath "${2:-$root/resources/scripts/vsa_hausdorff.mlx}")
-bash "$root/scripts/build.sh"
+# The sample needs only the MeshLab 2020.09 plugin and its private prefix.
+VSA_FILTERPLUGIN_SCALARS=${VSA_FILTERPLUGIN_SCALARS:-none} bash "$root/scripts/build.sh" meshlab_prefix
 
 out="$root/out"
 mkdir -p "$out"

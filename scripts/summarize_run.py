@@ -15,9 +15,16 @@ def main():
     log = open(args.log, encoding="utf-8", errors="replace").read()
 
     print(f"Variational Shape Approximation of {args.mesh}")
-    vsa_lines = [line.strip() for line in log.splitlines() if "VSA:" in line]
+    # meshlabserver echoes each log line ("LOG: n ...") and prints the whole log again after
+    # every filter: keep the first copy of each line.
+    vsa_lines = []
+    for line in log.splitlines():
+        if "VSA:" in line and not line.startswith("LOG:"):
+            text = line[line.rindex("VSA:"):].strip()  # progress messages lack newlines
+            if text not in vsa_lines:
+                vsa_lines.append(text)
     for line in vsa_lines:
-        print("  " + line[line.index("VSA:"):])
+        print("  " + line)
     if args.status != 0 or not vsa_lines:
         print(f"meshlabserver failed (exit status {args.status}); its log follows:\n")
         print(log)
@@ -37,7 +44,7 @@ def main():
     if len(directions) == 2:
         print(f"  Symmetric Hausdorff distance: {max(float(d[3]) for d in directions):.6g} "
               f"({max(float(d[7]) for d in directions) * 100:.3f}% of the bounding-box diagonal)")
-    for saved in re.findall(r"Mesh (.+?) saved as (\S+) \((\d+) vn (\d+) fn\)", log):
+    for saved in re.findall(r"Mesh (.*?) saved as (\S+) \((\d+) vn (\d+) fn\)", log):
         print(f"  wrote {saved[1]} ({saved[2]} vertices, {saved[3]} faces)")
     print(f"  meshlabserver wall time: {args.seconds[1] - args.seconds[0]:.2f} s (start-up and Hausdorff included)")
     return 0

@@ -99,7 +99,7 @@ QString WorkDir(const QString &name)
     return dir;
 }
 
-/// The layer the filter added: the document holds the input, then the approximation.
+/// The layer called `name` after the run (empty if there is none).
 QJsonObject Layer(const HostRun &run, const QString &name)
 {
     for (const QJsonValue &layer : run.Layers())

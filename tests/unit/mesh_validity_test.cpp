@@ -7,18 +7,10 @@
 #include <gtest/gtest.h>
 
 using namespace vcg::tri::vsa;
+using vsa_test::BareMesh;
 using vsa_test::TMesh;
 
 namespace {
-
-// A bare mesh type: double coordinates, no adjacency, no per-face mark, no optional
-// components. The check must need nothing more than vertex references and flags.
-class BVertex;
-class BFace;
-struct BUsedTypes : public vcg::UsedTypes<vcg::Use<BVertex>::AsVertexType, vcg::Use<BFace>::AsFaceType> {};
-class BVertex : public vcg::Vertex<BUsedTypes, vcg::vertex::Coord3d, vcg::vertex::BitFlags> {};
-class BFace : public vcg::Face<BUsedTypes, vcg::face::VertexRef, vcg::face::BitFlags> {};
-class BareMesh : public vcg::tri::TriMesh<std::vector<BVertex>, std::vector<BFace>> {};
 
 MeshValidity Check(const std::vector<vcg::Point3f> &coords, const std::vector<vcg::Point3i> &tris)
 {

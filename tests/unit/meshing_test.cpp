@@ -13,17 +13,11 @@
 
 using namespace vcg::tri::vsa;
 using vcg::Point3d;
+using vsa_test::BareMesh;
 using vsa_test::TMesh;
 
 namespace {
 
-// An output mesh type with nothing optional: no normals, no adjacency; flags only.
-class BVertex;
-class BFace;
-struct BUsedTypes : public vcg::UsedTypes<vcg::Use<BVertex>::AsVertexType, vcg::Use<BFace>::AsFaceType> {};
-class BVertex : public vcg::Vertex<BUsedTypes, vcg::vertex::Coord3d, vcg::vertex::BitFlags> {};
-class BFace : public vcg::Face<BUsedTypes, vcg::face::VertexRef, vcg::face::BitFlags> {};
-class BareMesh : public vcg::tri::TriMesh<std::vector<BVertex>, std::vector<BFace>> {};
 
 struct MeshingRun
 {

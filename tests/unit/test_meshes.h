@@ -18,6 +18,15 @@ class TVertex : public vcg::Vertex<TUsedTypes, vcg::vertex::Coord3f, vcg::vertex
 class TFace : public vcg::Face<TUsedTypes, vcg::face::VertexRef, vcg::face::Normal3f, vcg::face::FFAdj,
                                vcg::face::VFAdj, vcg::face::Color4b, vcg::face::Qualityf,
                                vcg::face::BitFlags> {};
+/// A bare mesh type: double coordinates, no normals, no adjacency, no optional components;
+/// what a stage needs beyond vertex references and flags must not be assumed.
+class BVertex;
+class BFace;
+struct BUsedTypes : public vcg::UsedTypes<vcg::Use<BVertex>::AsVertexType, vcg::Use<BFace>::AsFaceType> {};
+class BVertex : public vcg::Vertex<BUsedTypes, vcg::vertex::Coord3d, vcg::vertex::BitFlags> {};
+class BFace : public vcg::Face<BUsedTypes, vcg::face::VertexRef, vcg::face::BitFlags> {};
+class BareMesh : public vcg::tri::TriMesh<std::vector<BVertex>, std::vector<BFace>> {};
+
 /// Float coordinates like MeshLab's CMeshO, so the tests see the precision users get.
 class TMesh : public vcg::tri::TriMesh<std::vector<TVertex>, std::vector<TFace>> {};
 

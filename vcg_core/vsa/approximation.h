@@ -50,7 +50,10 @@ struct ApproximationParam
     /// When the iterations converge, move the proxy whose merge with a neighbour costs least to
     /// the worst region, and iterate again while that keeps lowering the energy.
     bool teleport = false;
-    int relaxations = 1;  ///< Lloyd iterations settling new proxies during seeding and Split
+    /// Full Lloyd iterations during seeding: after each hierarchical round (at least one), each
+    /// time farthest seeding doubles the count (none by default: every insertion is already
+    /// relaxed on the regions it touches); also the confined iterations of Split (at least one).
+    int relaxations = 0;
 };
 
 /// What the partitioning produced; ok == false means nothing else is filled in but `error`.
@@ -79,8 +82,7 @@ struct ApproximationResult
 ///
 /// Invariants: every face belongs to exactly one region, every region is non-empty and its
 /// seed (the face its proxy fits best) is in it. After Initialize() and Run() every region is
-/// connected; AddProxy() and Teleport() grow the new region locally (no full flood), so a
-/// region that lost a band of faces may be in pieces until the next Run().
+/// connected; AddProxy(), Teleport() and Split() only re-flood the regions they touch.
 class Approximation
 {
     // Defined first: the members below deduce their return types through it.
@@ -211,8 +213,8 @@ public:
     }
 
     /// The paper's region insertion: a proxy at the worst face of the region with the largest
-    /// energy, grown locally, and the regions it took faces from refitted (the others wait for
-    /// the next Run). Returns the new region's index (the last).
+    /// energy, grown locally, then one Lloyd iteration confined to the regions it touched (the
+    /// others wait for the next Run). Returns the new region's index (the last).
     int AddProxy()
     {
         RequireInitialized("AddProxy");
@@ -223,7 +225,7 @@ public:
         int worst = -1;
         for (int r = 0; r < ProxyCount(); ++r)
             if (regionSize[r] > 1 && (worst < 0 || state_.regionEnergy[r] > state_.regionEnergy[worst])) worst = r;
-        const int region = WithMetric([&](const auto &metric, auto &ws) { return AddRegionAt(metric, ws, WorstFace(worst)); });
+        const int region = WithMetric([&](const auto &metric, auto &ws) { return InsertIn(metric, ws, worst); });
         StartTracking(false);
         return region;
     }
@@ -420,18 +422,15 @@ private:
         return false;
     }
 
-    /// Grows a new region at `face`, then refits it and the regions it took faces from.
+    /// The seeding's insertion (detail::InsertInRegion) in `region`: at its worst face, grown
+    /// and relaxed locally.
     template <class Metric>
-    int AddRegionAt(const Metric &metric, PartitionWorkspace<Metric> &ws, int face)
+    int InsertIn(const Metric &metric, PartitionWorkspace<Metric> &ws, int region)
     {
-        std::vector<int> regionSize(ProxyCount(), 0);
-        for (int r : state_.partition.faceRegion) ++regionSize[r];
-        const int region = GrowRegion(mesh_, metric, geometry_, state_, face, regionSize, ws);
-        std::vector<char> refit(ProxyCount(), 0);
-        refit[region] = 1;
-        for (int r : ws.grownFrom) refit[r] = 1;
-        FitRegions(metric, state_, refit);
-        return region;
+        detail::RegionFaces faces;
+        faces.Rebuild(state_);
+        detail::InsertInRegion(mesh_, metric, geometry_, state_, ws, faces, region);
+        return ProxyCount() - 1;
     }
 
     template <class Metric>
@@ -464,13 +463,10 @@ private:
         state_.regionEnergy.push_back(0);
         std::vector<char> only(ProxyCount(), 0);
         only[region] = only[added] = 1;
-        std::vector<int> floodSeeds(ProxyCount(), -1);
         for (int i = 0; i < std::max(1, param_.relaxations); ++i) {
-            for (int f : faces) faceRegion[f] = -1;
-            floodSeeds[region] = state_.seeds[region];
-            floodSeeds[added] = state_.seeds[added];
-            FloodRegions(mesh_, metric, state_.partition.proxies, floodSeeds, faceRegion, ws);
-            for (int f : faces)  // pieces of a region left in pieces by AddProxy: back to it
+            const std::vector<std::pair<int, int>> seeds{{region, state_.seeds[region]}, {added, state_.seeds[added]}};
+            FloodWithin(mesh_, metric, state_.partition.proxies, seeds, faces, faceRegion, ws);
+            for (int f : faces)  // faces neither seed reached (the region was in pieces): back to it
                 if (faceRegion[f] < 0) faceRegion[f] = region;
             FitRegions(metric, state_, only);
         }
@@ -512,8 +508,7 @@ private:
         }
         if (best.first < 0 || !(bestCost < 0.5 * energy[worst])) return false;
         MergeRegions(metric, best.first, best.second);
-        const int target = worst > best.second ? worst - 1 : worst;
-        AddRegionAt(metric, ws, WorstFace(target));
+        InsertIn(metric, ws, worst > best.second ? worst - 1 : worst);
         return true;
     }
 

@@ -20,7 +20,7 @@ namespace vsa {
 enum class SeedingMethod
 {
     Random,        ///< uniform over the faces, at least one per connected component
-    Farthest,      ///< one proxy at a time at the face with the largest error
+    Farthest,      ///< one proxy at a time, at the worst face of the region with the largest energy
     Hierarchical,  ///< doubling rounds, new proxies spread over regions by their error
 };
 
@@ -29,9 +29,10 @@ struct SeedingGoal
 {
     int proxyCount = 1;       ///< exactly this many proxies; the most allowed when targetEnergy > 0
     double targetEnergy = 0;  ///< > 0: stop at the first relaxed partition whose energy is at most this
-    /// Lloyd iterations after each round (farthest: each time the count doubles). Seeding
-    /// always ends with at least one, so that its partition is a flood's: regions connected.
-    int relaxations = 1;
+    /// Full Lloyd iterations after each hierarchical round (at least one) and each time
+    /// farthest seeding doubles the count. Seeding always ends with at least one, so that its
+    /// partition is a flood's.
+    int relaxations = 0;
 };
 
 /// Reproducible random numbers. std::mt19937_64's sequence is fixed by the C++ standard; the
