@@ -3,10 +3,7 @@
 // validity and distance code as ours.
 // SPDX-License-Identifier: GPL-3.0-or-later
 
-#include "bench_json.h"
-#include "surface_distance.h"
-
-#include <vsa/mesh_validity.h>
+#include "output_quality.h"
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
@@ -206,20 +203,6 @@ std::string UnusableOutputReason(const ApproximationRun &run)
     return {};
 }
 
-void AddValidityKeys(vsa_bench::JsonLine &line, const vcg::tri::vsa::MeshValidity &output, int eulerIn)
-{
-    line.Add("out_vertices", output.vertices)
-        .Add("out_faces", output.faces)
-        .Add("manifold", output.manifold)
-        .Add("closed", output.closed)
-        .Add("oriented", output.oriented)
-        .Add("euler_in", eulerIn)
-        .Add("euler_out", output.eulerCharacteristic)
-        .Add("degenerate_faces", output.degenerateFaces)
-        .Add("duplicate_faces", output.duplicateFaces)
-        .Add("self_intersections", output.selfIntersections);
-}
-
 int Run(const Options &options)
 {
     vsa_bench::JsonLine line;
@@ -277,19 +260,10 @@ int Run(const Options &options)
     BenchMesh input, output;
     ToVcgMesh(mesh, input);
     ToVcgMesh(run.anchors, run.triangles, output);
-    const vcg::tri::vsa::MeshValidity inputValidity = vcg::tri::vsa::CheckMeshValidity(input, false);
-    const vcg::tri::vsa::MeshValidity outputValidity = vcg::tri::vsa::CheckMeshValidity(output);
     line.Add("valid_output", run.cgalSaysPolygonMesh);
     if (!run.cgalSaysPolygonMesh)
         line.Add("reason", "extract_mesh: the triangle soup is not a manifold oriented polygon mesh");
-    line.Add("closed_in", inputValidity.closed);
-    AddValidityKeys(line, outputValidity, inputValidity.eulerCharacteristic);
-
-    const vsa_bench::SurfaceDistance distance = vsa_bench::MeasureSurfaceDistance(input, output);
-    if (distance.valid)
-        line.Add("hausdorff_max", distance.max).Add("hausdorff_mean", distance.mean).Add("hausdorff_rms", distance.rms);
-    else
-        line.AddNull("hausdorff_max").AddNull("hausdorff_mean").AddNull("hausdorff_rms");
+    vsa_bench::AddOutputQualityKeys(line, input, output);
 
     if (!options.outPath.empty() && !WriteOff(options.outPath, run.anchors, run.triangles)) {
         line.Add("error", "cannot write " + options.outPath).Print();

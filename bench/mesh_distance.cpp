@@ -2,10 +2,7 @@
 // distance code the benchmark drivers use (run_bench.py uses it for MeshLab's decimation).
 // SPDX-License-Identifier: GPL-3.0-or-later
 
-#include "bench_json.h"
-#include "surface_distance.h"
-
-#include <vsa/mesh_validity.h>
+#include "output_quality.h"
 
 #include <wrap/io_trimesh/import_off.h>
 
@@ -56,25 +53,7 @@ int main(int argc, char **argv)
         return 1;
     }
     const vsa_bench::Stopwatch stopwatch;
-    const vcg::tri::vsa::MeshValidity inputValidity = vcg::tri::vsa::CheckMeshValidity(input, false);
-    const vcg::tri::vsa::MeshValidity validity = vcg::tri::vsa::CheckMeshValidity(simplified);
-    line.Add("faces", inputValidity.faces)
-        .Add("closed_in", inputValidity.closed)
-        .Add("out_vertices", validity.vertices)
-        .Add("out_faces", validity.faces)
-        .Add("manifold", validity.manifold)
-        .Add("closed", validity.closed)
-        .Add("oriented", validity.oriented)
-        .Add("euler_in", inputValidity.eulerCharacteristic)
-        .Add("euler_out", validity.eulerCharacteristic)
-        .Add("degenerate_faces", validity.degenerateFaces)
-        .Add("duplicate_faces", validity.duplicateFaces)
-        .Add("self_intersections", validity.selfIntersections);
-    const vsa_bench::SurfaceDistance distance = vsa_bench::MeasureSurfaceDistance(input, simplified);
-    if (distance.valid)
-        line.Add("hausdorff_max", distance.max).Add("hausdorff_mean", distance.mean).Add("hausdorff_rms", distance.rms);
-    else
-        line.AddNull("hausdorff_max").AddNull("hausdorff_mean").AddNull("hausdorff_rms");
+    vsa_bench::AddOutputQualityKeys(line, input, simplified);
     line.Add("t_measure_s", stopwatch.Seconds()).Print();
     return 0;
 }

@@ -1,13 +1,15 @@
-// vsa-bench: times our VSA partitioning on one mesh and prints one JSON line (bench/README.md).
+// vsa-bench: times our VSA (partitioning, then meshing) on one mesh and prints one JSON line
+// (bench/README.md).
 //   vsa-bench --mesh FILE --k N --metric l21|l2 --init random|farthest|hierarchical
 //             --iterations N --seed S [--target-error E] [--tolerance T] [--relaxations R]
-//             [--teleport] [--out FILE]
+//             [--teleport] [--anchor-threshold A] [--out FILE]
 // The tolerance defaults to 0 so that --iterations Lloyd iterations run (unless the partition
-// cycles), like CGAL's run(N): per-iteration timings compare. --out writes the input with each
-// face coloured by its region (format from the extension: ply, off, obj).
-#include "bench_json.h"
+// cycles), like CGAL's run(N): per-iteration timings compare. --out writes the approximating
+// mesh with each face coloured by its region (format from the extension: ply, off, obj).
+#include "output_quality.h"
 
 #include <vsa/approximation.h>
+#include <vsa/meshing.h>
 
 #include <vcg/complex/complex.h>
 #include <wrap/io_trimesh/export.h>
@@ -30,6 +32,7 @@ struct Options
 {
     std::string mesh, out, metric = "l21", init = "hierarchical";
     vcg::tri::vsa::ApproximationParam param;
+    vcg::tri::vsa::MeshingParam meshing;
 };
 
 /// Parses the command line into `o`; returns an error message, empty when all is well.
@@ -54,6 +57,7 @@ std::string Parse(int argc, char **argv, Options &o)
             else if (arg == "--target-error") o.param.targetError = std::stod(value);
             else if (arg == "--tolerance") o.param.tolerance = std::stod(value);
             else if (arg == "--relaxations") o.param.relaxations = std::stoi(value);
+            else if (arg == "--anchor-threshold") o.meshing.chordThreshold = std::stod(value);
             else if (arg == "--metric") o.metric = value;
             else if (arg == "--init") o.init = value;
             else return "unknown option " + arg;
@@ -72,14 +76,11 @@ std::string Parse(int argc, char **argv, Options &o)
     return {};
 }
 
-/// The input with each face coloured by its region.
-bool WriteRegions(BMesh &m, const vcg::tri::vsa::IndexedMesh &im, const vcg::tri::vsa::Partition &p,
-                  const std::string &path)
+/// The approximation with each face coloured by its region.
+bool WriteApproximation(BMesh &out, const std::vector<int> &faceRegion, int regionCount, const std::string &path)
 {
-    const int regionCount = int(p.proxies.size());
-    for (int f = 0; f < im.FaceCount(); ++f)
-        m.face[im.sourceFace[f]].C() = vcg::Color4b::Scatter(regionCount, p.faceRegion[f]);
-    return vcg::tri::io::Exporter<BMesh>::Save(m, path.c_str(), vcg::tri::io::Mask::IOM_FACECOLOR) == 0;
+    for (size_t f = 0; f < out.face.size(); ++f) out.face[f].C() = vcg::Color4b::Scatter(regionCount, faceRegion[f]);
+    return vcg::tri::io::Exporter<BMesh>::Save(out, path.c_str(), vcg::tri::io::Mask::IOM_FACECOLOR) == 0;
 }
 
 }  // namespace
@@ -117,20 +118,36 @@ int main(int argc, char **argv)
         const int iterations = approximation.Run(o.param.maxIterations);
         const double tIterations = clock.Seconds();
         const int faces = approximation.Mesh().FaceCount();
+        const ApproximationResult partition = approximation.Result();
+        clock.Restart();
+        BMesh output;
+        const MeshingReport meshing = BuildApproximatingMesh(approximation.Mesh(), partition.partition, o.meshing, output);
+        const double tMesh = clock.Seconds();
+        // Before the measuring below allocates its own copies and samples.
+        const double peakRssMb = vsa_bench::PeakRssMb();
         json.Add("t_seed_s", tSeed)
             .Add("t_iterations_s", tIterations)
             .Add("iterations_run", iterations)
-            .Add("t_total_s", tSetup + tSeed + tIterations)
-            .Add("energy", approximation.Energy())
-            .Add("peak_rss_mb", vsa_bench::PeakRssMb())
+            .Add("t_mesh_s", tMesh)
+            .Add("t_total_s", tSetup + tSeed + tIterations + tMesh)
+            .Add("energy", partition.energy)
+            .Add("peak_rss_mb", peakRssMb)
             .Add("seed", o.param.randomSeed)
             .Add("iterations", o.param.maxIterations)
-            .Add("proxies", approximation.ProxyCount())
+            .Add("proxies", partition.proxyCount)
             .Add("t_setup_s", tSetup)
             .Add("us_per_face_iter", iterations > 0 ? 1e6 * tIterations / (double(faces) * iterations) : 0.0)
-            .Add("reference_energy", approximation.ReferenceEnergy());
+            .Add("reference_energy", partition.referenceEnergy);
         if (o.param.targetError > 0) json.Add("target_error", o.param.targetError);
-        if (!o.out.empty() && !WriteRegions(m, approximation.Mesh(), approximation.CurrentPartition(), o.out)) {
+        if (!meshing.ok) {
+            json.Add("valid_output", false).Add("reason", meshing.error).Print();
+            return 0;
+        }
+        json.Add("valid_output", meshing.validity.IsValid())
+            .Add("anchors", meshing.anchors)
+            .Add("regions_fallback", meshing.regionsByEarClipping + meshing.regionsWithSteinerVertex);
+        vsa_bench::AddOutputQualityKeys(json, m, output);
+        if (!o.out.empty() && !WriteApproximation(output, meshing.faceRegion, partition.proxyCount, o.out)) {
             json.Add("error", "cannot write " + o.out).Print();
             return 1;
         }
