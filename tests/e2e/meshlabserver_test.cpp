@@ -335,3 +335,12 @@ TEST(MeshLabServerBadInput, NaNCoordinates)
                                           Quote(WriteVsaScript(dir, {{"ProxyNum", "1"}}).string())),
                        "NaN");
 }
+
+TEST(MeshLabServerBadInput, EmptyMesh)
+{
+    const fs::path dir = WorkDir("bad_empty");
+    const fs::path empty = WriteOff(dir, "empty.off", "OFF\n0 0 0\n");
+    ExpectCleanFailure(RunServer(dir, "-i " + Quote(empty.string()) + " -s " +
+                                          Quote(WriteVsaScript(dir, {{"ProxyNum", "1"}}).string())),
+                       "The mesh is empty.");
+}
