@@ -42,34 +42,21 @@ void ExpectOneRegionPerSide(const IndexedMesh &im, const ApproximationResult &r)
 
 }  // namespace
 
-TEST(PartitionApproximation, CubeGetsOneRegionPerSideFromEverySeeding)
+TEST(PartitionApproximation, CubeGetsOneRegionPerSideFromEverySeedingUnderBothMetrics)
 {
     TMesh m;
     vsa_test::MakeTessellatedCube(m, 5);
     const IndexedMesh im = BuildIndexedMesh(m);
-    for (SeedingMethod init : {SeedingMethod::Farthest, SeedingMethod::Hierarchical, SeedingMethod::Random})
-        for (uint64_t seed : {1u, 2u, 3u, 42u, 1234u}) {
-            SCOPED_TRACE(testing::Message() << "init " << int(init) << " seed " << seed);
-            ApproximationParam p = Params(6, MetricKind::L21, init, seed);
-            // Random seeds can put two proxies on one side and none on another; only
-            // teleporting a proxy gets Lloyd out of that minimum.
-            p.teleport = init == SeedingMethod::Random;
-            ExpectOneRegionPerSide(im, Approximate(im, p));
-        }
-}
-
-TEST(PartitionApproximation, CubeUnderL2GetsOneRegionPerSide)
-{
-    TMesh m;
-    vsa_test::MakeTessellatedCube(m, 5);
-    const IndexedMesh im = BuildIndexedMesh(m);
-    for (SeedingMethod init : {SeedingMethod::Farthest, SeedingMethod::Hierarchical, SeedingMethod::Random})
-        for (uint64_t seed : {1u, 2u, 3u, 42u, 1234u}) {
-            SCOPED_TRACE(testing::Message() << "init " << int(init) << " seed " << seed);
-            ApproximationParam p = Params(6, MetricKind::L2, init, seed);
-            p.teleport = init == SeedingMethod::Random;
-            ExpectOneRegionPerSide(im, Approximate(im, p));
-        }
+    for (MetricKind metric : {MetricKind::L21, MetricKind::L2})
+        for (SeedingMethod init : {SeedingMethod::Farthest, SeedingMethod::Hierarchical, SeedingMethod::Random})
+            for (uint64_t seed : {1u, 2u, 3u, 42u, 1234u}) {
+                SCOPED_TRACE(testing::Message() << "metric " << int(metric) << " init " << int(init) << " seed " << seed);
+                ApproximationParam p = Params(6, metric, init, seed);
+                // Random seeds can put two proxies on one side and none on another; only
+                // teleporting a proxy gets Lloyd out of that minimum.
+                p.teleport = init == SeedingMethod::Random;
+                ExpectOneRegionPerSide(im, Approximate(im, p));
+            }
 }
 
 TEST(PartitionApproximation, FoldedSheetUnderL2GetsOneRegionPerPlane)
