@@ -12,16 +12,8 @@ mkdir -p "$deps"
 packages=(meshlab qtbase5-dev libqt5opengl5-dev libqt5xmlpatterns5-dev libglew-dev libeigen3-dev
           libgtest-dev cmake g++ make xvfb xauth dpkg-dev libcgal-dev libgmp-dev libmpfr-dev
           libboost-dev x11-apps xdotool imagemagick tesseract-ocr tesseract-ocr-eng python3 ca-certificates)
-missing=()
-for p in "${packages[@]}"; do
-  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
-done
-if [ "${#missing[@]}" -gt 0 ]; then
-  echo "setup: installing ${missing[*]}"
-  export DEBIAN_FRONTEND=noninteractive
-  apt-get update -qq
-  apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
-fi
+source "$root/scripts/lib/apt_packages.sh"
+install_missing_packages setup "${packages[@]}"
 
 apt_private=(-o Dir::Etc::SourceList=/dev/null
              -o Dir::Etc::SourceParts="$root/scripts/apt-sources"

@@ -34,16 +34,8 @@ read -r -a ml_plugins <<< "${VSA_FILTERPLUGIN_PLUGINS:-io_base filter_measure}"
 # OpenGL + GLU, GLEW >= 2.0, Eigen 3; vcglib and easyexif come in the tarball).
 packages=(cmake g++ make xz-utils qtbase5-dev libqt5opengl5-dev libglew-dev libglu1-mesa-dev
           libgl-dev libeigen3-dev ca-certificates)
-missing=()
-for p in "${packages[@]}"; do
-  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
-done
-if [ "${#missing[@]}" -gt 0 ]; then
-  echo "setup_filterplugin: installing ${missing[*]}"
-  export DEBIAN_FRONTEND=noninteractive
-  apt-get update -qq
-  apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
-fi
+source "$root/scripts/lib/apt_packages.sh"
+install_missing_packages setup_filterplugin "${packages[@]}"
 
 apt_private=(-o Dir::Etc::SourceList=/dev/null
              -o Dir::Etc::SourceParts="$root/scripts/apt-sources-sid"
