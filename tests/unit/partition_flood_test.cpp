@@ -1,4 +1,5 @@
-// The flood: its queue pops in the textbook order, and its labels are the textbook flood's.
+// The flood: its queue pops by rank, first in first out, and its labels are those of the flood
+// that queues every candidate.
 #include "partition_test_helpers.h"
 
 #include <vsa/face_geometry.h>
@@ -8,6 +9,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <queue>
 #include <tuple>
 
@@ -16,27 +18,33 @@ using vcg::Point3d;
 
 namespace {
 
-using Key = std::tuple<double, int, int>;  // (error, face, region), smallest first
+using Key = std::tuple<FloodQueue::Rank, long, int, int>;  // (rank, push order, face, region)
 using ReferenceQueue = std::priority_queue<Key, std::vector<Key>, std::greater<Key>>;
 
-/// The paper's flood with a std::priority_queue and no shortcut: every neighbour is queued.
+/// The paper's flood with a std::priority_queue and no shortcut: every neighbour is queued,
+/// keyed by the rank of its error and then by when it was queued.
 template <class Metric>
 std::vector<int> TextbookFlood(const IndexedMesh &mesh, const Metric &metric, const std::vector<Proxy> &proxies,
                                const std::vector<int> &seeds)
 {
+    FloodQueue ranks;
+    ranks.Reset(metric.ErrorScale());
     std::vector<int> label(mesh.FaceCount(), -1);
     ReferenceQueue queue;
+    long pushes = 0;
+    const auto offer = [&](int face, int region) {
+        if (face >= 0 && label[face] < 0)
+            queue.emplace(ranks.RankOf(metric.Error(face, proxies[region])), pushes++, face, region);
+    };
     for (int r = 0; r < int(seeds.size()); ++r) label[seeds[r]] = r;
     for (int r = 0; r < int(seeds.size()); ++r)
-        for (int g : mesh.neighbors[seeds[r]])
-            if (g >= 0 && label[g] < 0) queue.emplace(metric.Error(g, proxies[r]), g, r);
+        for (int g : mesh.neighbors[seeds[r]]) offer(g, r);
     while (!queue.empty()) {
-        const auto [error, face, region] = queue.top();
+        const auto [rank, order, face, region] = queue.top();
         queue.pop();
         if (label[face] >= 0) continue;
         label[face] = region;
-        for (int g : mesh.neighbors[face])
-            if (g >= 0 && label[g] < 0) queue.emplace(metric.Error(g, proxies[region]), g, region);
+        for (int g : mesh.neighbors[face]) offer(g, region);
     }
     return label;
 }
@@ -57,14 +65,38 @@ RegionState SeededState(const IndexedMesh &mesh, const Metric &metric, const Fac
 
 }  // namespace
 
-TEST(PartitionFlood, QueuePopsInErrorFaceRegionOrder)
+TEST(PartitionFlood, RanksFollowTheErrorsToTwoPercent)
 {
-    // Rising errors with dips below the last pop, exact ties, and zeros: what floods produce.
+    FloodQueue queue;
+    const double scale = 3.5;
+    queue.Reset(scale);
+    EXPECT_EQ(queue.RankOf(0.0), 0u);
+    EXPECT_EQ(queue.RankOf(-0.0), 0u);
+    EXPECT_EQ(queue.RankOf(1e-300), 0u);
+    EXPECT_EQ(queue.RankOf(2 * scale), FloodQueue::kRanks - 1);
+    EXPECT_EQ(queue.RankOf(1e300), FloodQueue::kRanks - 1);
+    EXPECT_EQ(queue.RankOf(std::numeric_limits<double>::infinity()), FloodQueue::kRanks - 1);
+    vsa_test::TestRandom random(5);
+    for (int i = 0; i < 10000; ++i) {
+        // Over the whole range the queue ranks: from the scale down 60 binades.
+        const double error = scale * std::ldexp(1 + random.Uniform(), -1 - int(60 * random.Uniform()));
+        const double larger = error * (1 + random.Uniform());
+        ASSERT_LE(queue.RankOf(error), queue.RankOf(larger)) << error << " " << larger;
+        ASSERT_GT(queue.RankOf(error), 0u) << error;
+        ASSERT_LT(queue.RankOf(error), queue.RankOf(error * 1.02)) << error;  // 2% apart: never tied
+    }
+}
+
+TEST(PartitionFlood, QueuePopsByRankFirstInFirstOut)
+{
+    // Rising errors with dips below the last pop, exact ties, zeros and many binades: what
+    // floods produce. Same rank: the earlier push first.
     vsa_test::TestRandom random(3);
     FloodQueue queue;
+    queue.Reset(2.0);
     ReferenceQueue reference;
-    queue.Clear();
     double level = 0;
+    long pushes = 0;
     int pops = 0;
     for (int step = 0; step < 20000; ++step) {
         if (random.Uniform() < 0.55 || reference.empty()) {
@@ -72,14 +104,15 @@ TEST(PartitionFlood, QueuePopsInErrorFaceRegionOrder)
             double error = u < 0.1 ? 0.0 : u < 0.3 ? level : u < 0.5 ? level * random.Uniform() : level + random.Uniform();
             if (u > 0.9) error = std::ldexp(random.Uniform(), -int(60 * random.Uniform()));  // tiny, many binades
             const int face = int(random.Uniform() * 50), region = int(random.Uniform() * 5);
-            queue.Push({error, face, region});
-            reference.emplace(error, face, region);
+            const FloodQueue::Rank rank = queue.RankOf(error);
+            queue.Push(rank, {face, region});
+            reference.emplace(rank, pushes++, face, region);
         } else {
             const FloodQueue::Candidate c = queue.Pop();
-            const Key expected = reference.top();
+            const auto [rank, order, face, region] = reference.top();
             reference.pop();
-            ASSERT_EQ(std::make_tuple(c.error, c.face, c.region), expected) << "at pop " << pops;
-            level = c.error;
+            ASSERT_EQ(std::make_pair(c.face, c.region), std::make_pair(face, region)) << "at pop " << pops;
+            level = std::ldexp(1.0, -int(rank % 7));  // any level: the next pushes spread around it
             ++pops;
         }
         ASSERT_EQ(queue.Empty(), reference.empty());
@@ -105,9 +138,10 @@ TEST(PartitionFlood, LabelsAreTheTextbookFloodsOnARealMesh)
     }
 }
 
-TEST(PartitionFlood, TiesFollowTheTextbookOrderOnACube)
+TEST(PartitionFlood, TiesGrowBreadthFirstOnACube)
 {
-    // On a cube whole sides tie at exactly the same error: the order (error, face, region) decides.
+    // On a cube whole sides tie at exactly error 0: the order of the offers decides, so the
+    // regions of one side grow breadth-first, as the textbook flood with the same key.
     vsa_test::TMesh m;
     vsa_test::MakeTessellatedCube(m, 6);
     const IndexedMesh im = BuildIndexedMesh(m);

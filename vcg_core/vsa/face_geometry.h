@@ -5,6 +5,7 @@
 
 #include <vsa/indexed_mesh.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <limits>
@@ -28,6 +29,8 @@ struct FaceGeometry
     /// Only for the L2 metric: the integral over the face of (x - c)(x - c)^T, c the centroid.
     /// The L2 error of a face and the covariance of a region are both exact sums of these.
     std::vector<SymmetricMatrix3> secondMoment;
+    double maxArea = 0;   ///< the largest face area
+    double diagonal = 0;  ///< of the faces' bounding box
 
     int FaceCount() const { return int(area.size()); }
     bool HasSecondMoments() const { return secondMoment.size() == area.size(); }
@@ -42,6 +45,7 @@ inline FaceGeometry ComputeFaceGeometry(const IndexedMesh &mesh, bool withSecond
     g.normal.resize(faceCount);
     g.centroid.resize(faceCount);
     if (withSecondMoments) g.secondMoment.resize(faceCount);
+    Box3d box;
     for (int f = 0; f < faceCount; ++f) {
         const Point3d &p0 = mesh.positions[mesh.faces[f][0]];
         const Point3d &p1 = mesh.positions[mesh.faces[f][1]];
@@ -53,6 +57,9 @@ inline FaceGeometry ComputeFaceGeometry(const IndexedMesh &mesh, bool withSecond
         g.area[f] = hasNormal ? 0.5 * doubleArea : 0.0;
         g.normal[f] = hasNormal ? cross / doubleArea : Point3d(0, 0, 0);
         g.centroid[f] = (p0 + p1 + p2) / 3.0;
+        g.maxArea = std::max(g.maxArea, g.area[f]);
+        if (hasNormal)
+            for (const Point3d *p : {&p0, &p1, &p2}) box.Add(*p);
         if (withSecondMoments) {
             // For a triangle, integral of (x-c)(x-c)^T = area/12 * sum of e_i e_i^T, e_i = p_i - c.
             SymmetricMatrix3 m{0, 0, 0, 0, 0, 0};
@@ -69,6 +76,7 @@ inline FaceGeometry ComputeFaceGeometry(const IndexedMesh &mesh, bool withSecond
             g.secondMoment[f] = m;
         }
     }
+    if (!box.IsNull()) g.diagonal = box.Diag();
     return g;
 }
 

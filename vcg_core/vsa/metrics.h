@@ -29,6 +29,8 @@ namespace vsa {
    void Add(Moments &m, const Moments &other) const;  // union of two disjoint face sets
    Proxy Fit(const Moments &m, const Proxy &fallback) const;  // fallback: when no fit exists
    double Energy(const Moments &m, const Proxy &p) const;     // sum of Error over the faces
+   double ErrorScale() const;  // about the largest error a face can have: the flood's queue
+                               // ranks errors relative to it
 
  FaceData lets the flood keep, next to each face's neighbours, the few numbers its error
  needs, so that offering a face to a region reads one cache line. Moments are what makes
@@ -72,6 +74,8 @@ public:
     FaceData Data(int face) const { return {g_->normal[face], g_->area[face]}; }
     double Error(const FaceData &d, const Proxy &p) const { return d.area * (d.normal - p.normal).SquaredNorm(); }
     double Error(int face, const Proxy &p) const { return Error(Data(face), p); }
+    /// |n_f - N|^2 <= 4.
+    double ErrorScale() const { return 4 * g_->maxArea; }
 
     Moments EmptyMoments(const Point3d & /*reference: centroids are averaged, not differenced*/) const { return {}; }
 
@@ -147,6 +151,8 @@ public:
         return std::max(0.0, planar) + d.area * offset * offset;
     }
     double Error(int face, const Proxy &p) const { return Error(Data(face), p); }
+    /// A face within the model's bounding box, and a proxy through it, are at most a diagonal apart.
+    double ErrorScale() const { return g_->maxArea * g_->diagonal * g_->diagonal; }
 
     Moments EmptyMoments(const Point3d &reference) const
     {
