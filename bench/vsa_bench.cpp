@@ -2,7 +2,7 @@
 // (bench/README.md).
 //   vsa-bench --mesh FILE --k N --metric l21|l2 --init random|farthest|hierarchical
 //             --iterations N --seed S [--target-error E] [--tolerance T] [--relaxations R]
-//             [--teleport] [--anchor-threshold A] [--out FILE]
+//             [--teleport 0|1] [--anchor-threshold A] [--out FILE]
 // The tolerance defaults to 0 so that --iterations Lloyd iterations run (unless the partition
 // cycles), like CGAL's run(N): per-iteration timings compare. --out writes the approximating
 // mesh with each face coloured by its region (format from the extension: ply, off, obj).
@@ -42,10 +42,6 @@ std::string Parse(int argc, char **argv, Options &o)
     o.param.tolerance = 0;
     for (int i = 1; i < argc; ++i) {
         const std::string arg = argv[i];
-        if (arg == "--teleport") {
-            o.param.teleport = true;
-            continue;
-        }
         if (i + 1 >= argc) return "missing value after " + arg;
         const std::string value = argv[++i];
         try {
@@ -57,6 +53,10 @@ std::string Parse(int argc, char **argv, Options &o)
             else if (arg == "--target-error") o.param.targetError = std::stod(value);
             else if (arg == "--tolerance") o.param.tolerance = std::stod(value);
             else if (arg == "--relaxations") o.param.relaxations = std::stoi(value);
+            else if (arg == "--teleport") {
+                if (value != "0" && value != "1") return "--teleport takes 0 or 1";
+                o.param.teleport = value == "1";
+            }
             else if (arg == "--anchor-threshold") o.meshing.chordThreshold = std::stod(value);
             else if (arg == "--metric") o.metric = value;
             else if (arg == "--init") o.init = value;

@@ -154,6 +154,7 @@ TEST(PartitionApproximation, LloydStopsOnTolerance)
     ApproximationParam p = Params(30, MetricKind::L21, SeedingMethod::Random, 1);
     p.tolerance = 0.05;
     p.maxIterations = 100;
+    p.teleport = false;  // it would go on after converging
     const ApproximationResult r = Approximate(im, p);
     ASSERT_TRUE(r.ok);
     ASSERT_GE(r.iterations, 2);

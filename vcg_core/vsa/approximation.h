@@ -48,12 +48,15 @@ struct ApproximationParam
     double tolerance = 1e-4;  ///< stop once |E_prev - E| <= tolerance * E_prev
     uint64_t randomSeed = 0;  ///< the same seed gives the same result, bit for bit
     /// When the iterations converge, move the proxy whose merge with a neighbour costs least to
-    /// the worst region, and iterate again while that keeps lowering the energy.
-    bool teleport = false;
+    /// the worst region, and iterate again while that keeps lowering the energy. It only ever
+    /// lowers the energy (on CGAL's fandisk, k=100, farthest: 3.4% lower).
+    bool teleport = true;
     /// Full Lloyd iterations during seeding: after each hierarchical round (at least one), each
-    /// time farthest seeding doubles the count (none by default: every insertion is already
-    /// relaxed on the regions it touches); also the confined iterations of Split (at least one).
-    int relaxations = 0;
+    /// time farthest seeding doubles the count (every insertion is already relaxed on the
+    /// regions it touches); also the confined iterations of Split (at least one). 3 lowered the
+    /// final energy by 0.5-7% on smooth meshes at small k (CGAL's bunny and armadillo, k=20 and
+    /// 100) for 1.5x the seeding time.
+    int relaxations = 3;
 };
 
 /// What the partitioning produced; ok == false means nothing else is filled in but `error`.
