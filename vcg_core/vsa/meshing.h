@@ -45,8 +45,10 @@ struct MeshingParam
     bool checkSelfIntersections = true;
     /// Passes that add anchors where the output folds (a region's polygon crosses itself on
     /// its plane) or intersects itself, and pin anchors whose projection made it intersect;
-    /// each is a new triangulation and a grid pass. 0 keeps the first output as it is.
-    int repairRounds = 4;
+    /// each is a new triangulation and a grid pass, run only while defects remain. 0 keeps the
+    /// first output as it is. On CGAL's 85 sample meshes that do not intersect themselves, at
+    /// k=50, 4 rounds left 13 outputs with self-intersections, 12 left 7, for a few ms each.
+    int repairRounds = 12;
 };
 
 struct MeshingReport
