@@ -145,7 +145,9 @@ int main(int argc, char **argv)
         }
         json.Add("valid_output", meshing.validity.IsValid())
             .Add("anchors", meshing.anchors)
-            .Add("regions_fallback", meshing.regionsByEarClipping + meshing.regionsWithSteinerVertex);
+            .Add("regions_fallback", meshing.regionsByEarClipping + meshing.regionsWithSteinerVertex +
+                                         meshing.regionsKeptAsInput)
+            .Add("regions_kept_as_input", meshing.regionsKeptAsInput);
         vsa_bench::AddOutputQualityKeys(json, m, output);
         if (!o.out.empty() && !WriteApproximation(output, meshing.faceRegion, partition.proxyCount, o.out)) {
             json.Add("error", "cannot write " + o.out).Print();

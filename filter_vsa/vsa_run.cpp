@@ -49,10 +49,12 @@ void Describe(const vsa::ShapeApproximationResult &r, const VsaFilterSettings &s
                .arg(m.validity.faces)
                .arg(m.validity.vertices)
                .arg(m.anchors);
-    log << QString("VSA: regions meshed by flooding %1, by ear-clipping fallback %2, with an extra vertex %3, cut into discs %4")
+    log << QString("VSA: regions meshed by flooding %1, by ear-clipping fallback %2, with an extra vertex %3, "
+                   "kept as input faces against self-intersections %4, cut into discs %5")
                .arg(m.regionsByFlooding)
                .arg(m.regionsByEarClipping)
                .arg(m.regionsWithSteinerVertex)
+               .arg(m.regionsKeptAsInput)
                .arg(m.regionsCut);
     log << QString("VSA: output: %1").arg(QString::fromStdString(m.validity.Summary()));
     log << QString("VSA: time: seeding %1 s, iterations %2 s, meshing %3 s, total %4 s")
@@ -69,7 +71,8 @@ void Describe(const vsa::ShapeApproximationResult &r, const VsaFilterSettings &s
     f["faces_out"] = m.validity.faces;
     f["vertices_out"] = m.validity.vertices;
     f["anchors"] = m.anchors;
-    f["regions_fallback"] = m.regionsByEarClipping + m.regionsWithSteinerVertex;
+    f["regions_fallback"] = m.regionsByEarClipping + m.regionsWithSteinerVertex + m.regionsKeptAsInput;
+    f["regions_kept_as_input"] = m.regionsKeptAsInput;
     f["manifold"] = m.validity.manifold;
     f["closed"] = m.validity.closed;
     f["oriented"] = m.validity.oriented;

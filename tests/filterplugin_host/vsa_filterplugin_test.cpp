@@ -141,6 +141,8 @@ void ExpectApproximation(const HostRun &run, const QString &inputName, const QSt
     EXPECT_GE(figures["anchors"].toInt(), 3);
     EXPECT_LE(figures["anchors"].toInt(), output["vertices"].toInt());
     EXPECT_GE(figures["regions_fallback"].toInt(), 0);
+    ASSERT_TRUE(figures.contains("regions_kept_as_input")) << run.Dump();
+    EXPECT_LE(figures["regions_kept_as_input"].toInt(), figures["regions_fallback"].toInt());
     EXPECT_TRUE(figures["manifold"].toBool());
     EXPECT_TRUE(figures["oriented"].toBool());
     EXPECT_EQ(figures["closed"].toBool(), inputClosed);

@@ -52,7 +52,8 @@ void ExpectValidWithInputTopology(const MeshingRun &run)
     EXPECT_EQ(v.eulerCharacteristic, run.inputValidity.eulerCharacteristic) << v.Summary();
     EXPECT_EQ(int(run.report.faceRegion.size()), v.faces);
     EXPECT_EQ(int(run.report.vertexSource.size()), v.vertices);
-    EXPECT_EQ(run.report.regionsByFlooding + run.report.regionsByEarClipping + run.report.regionsWithSteinerVertex,
+    EXPECT_EQ(run.report.regionsByFlooding + run.report.regionsByEarClipping + run.report.regionsWithSteinerVertex +
+                  run.report.regionsKeptAsInput,
               run.report.regions);
 }
 

@@ -19,6 +19,7 @@
 #include <sstream>
 #include <string>
 #include <type_traits>
+#include <unordered_map>
 #include <vector>
 
 namespace vcg {
@@ -61,6 +62,7 @@ struct MeshingReport
     int regionsByFlooding = 0;         ///< triangulated by the discrete flooding alone
     int regionsByEarClipping = 0;      ///< flooding completed or replaced by ear clipping
     int regionsWithSteinerVertex = 0;  ///< needed a fan around an extra vertex
+    int regionsKeptAsInput = 0;        ///< kept (in part) at the input's resolution against self-intersections
     int regionsCut = 0;                ///< not a disc (ring, islands, handle, closed, disconnected): cut into discs
     int cells = 0;                     ///< discs triangulated (regions, or their pieces)
 
@@ -98,6 +100,7 @@ struct MeshingReport
         if (pinnedAnchors) s << ", " << pinnedAnchors << " anchors left unprojected against self-intersections";
         s << "; triangulated by flooding " << regionsByFlooding << ", ear clipping " << regionsByEarClipping;
         if (regionsWithSteinerVertex) s << ", fan around an extra vertex " << regionsWithSteinerVertex;
+        if (regionsKeptAsInput) s << ", kept as input faces against self-intersections " << regionsKeptAsInput;
         if (regionsCut) s << "; " << regionsCut << " regions cut into discs";
         if (emptyRegions) s << "; " << emptyRegions << " empty proxies";
         if (ignoredFaces) s << "; " << ignoredFaces << " input faces with a repeated vertex ignored";
@@ -157,12 +160,44 @@ struct MeshingPass
     int pinnedAnchors = 0;          ///< anchors kept at their input vertex
 };
 
+/// Cell c as its own input faces, the last resort against self-intersections: every vertex of
+/// its loop must be a pinned anchor (so its neighbours meet it on the input's boundary); its
+/// interior vertices become extra vertices at their input positions. For an input that does
+/// not intersect itself the cell then cannot either.
+template <class CoordType>
+void KeepInputFaces(const MeshingSurface &s, int c, OutputRegistry &registry, MeshingPass &pass)
+{
+    std::unordered_map<int, int> extraOf;  // interior surface vertex -> output vertex
+    auto output = [&](int v) {
+        const int anchor = pass.anchors.anchorOfVertex[v];
+        if (anchor >= 0) return anchor;
+        const auto [it, added] = extraOf.emplace(v, int(pass.positions.size()));
+        if (added) {
+            pass.positions.push_back(Point3d::Construct(CoordType::Construct(s.positions[v])));
+            pass.vertexSource.push_back(v);
+        }
+        return it->second;
+    };
+    Point3d normal(0, 0, 0);
+    for (int k = s.cellFaceOffset[c]; k < s.cellFaceOffset[c + 1]; ++k) {
+        const auto &f = s.faces[s.cellFaces[k]];
+        const std::array<int, 3> t{output(f[0]), output(f[1]), output(f[2])};
+        registry.AddFace(t);
+        pass.triangles.push_back(t);
+        pass.triangleCell.push_back(c);
+        normal += (s.positions[f[1]] - s.positions[f[0]]) ^ (s.positions[f[2]] - s.positions[f[0]]);
+    }
+    pass.cellMethod[c] = CellMethod::InputFaces;
+    pass.cellNormal[c] = normal.Norm() > 0 ? normal / normal.Norm() : Point3d(0, 0, 1);
+}
+
 /// Anchors, placement and triangulation. Positions are rounded to the output's scalar type
 /// first: triangles are judged (degenerate or not, convex or not) on the coordinates as they
 /// will be written, since a triangle fine in double can be flat in a float mesh.
 template <class CoordType>
 MeshingPass RunMeshingPass(const MeshingSurface &s, const std::vector<Proxy> &proxies, const MeshingParam &param,
-                           const std::vector<char> &requiredAnchors, const std::vector<char> &pinnedAnchors)
+                           const std::vector<char> &requiredAnchors, const std::vector<char> &pinnedAnchors,
+                           const std::vector<char> &inputCells)
 {
     MeshingPass pass;
     pass.anchors = SelectAnchors(s, proxies, param.chordThreshold, requiredAnchors);
@@ -184,8 +219,14 @@ MeshingPass RunMeshingPass(const MeshingSurface &s, const std::vector<Proxy> &pr
             pass.cellOutlines.AddEdge(a, b);
         }
     }
+    pass.cellMethod.resize(s.CellCount());
+    pass.cellNormal.resize(s.CellCount());
+    // Then the cells kept as input faces: the others must triangulate around their edges too.
+    for (int c = 0; c < s.CellCount(); ++c)
+        if (inputCells[c]) KeepInputFaces<CoordType>(s, c, registry, pass);
     CellFlooding flooding(s);
     for (int c = 0; c < s.CellCount(); ++c) {
+        if (inputCells[c]) continue;
         const CellTriangulation cell = TriangulateCell(s, c, pass.polygons[c], pass.positions, proxies[s.cellRegion[c]],
                                                        anchors, flooding, registry, int(pass.positions.size()));
         if (cell.steinerVertex >= 0) {
@@ -196,8 +237,8 @@ MeshingPass RunMeshingPass(const MeshingSurface &s, const std::vector<Proxy> &pr
             pass.triangles.push_back(t);
             pass.triangleCell.push_back(c);
         }
-        pass.cellMethod.push_back(cell.method);
-        pass.cellNormal.push_back(cell.planeNormal);
+        pass.cellMethod[c] = cell.method;
+        pass.cellNormal[c] = cell.planeNormal;
     }
     return pass;
 }
@@ -224,7 +265,8 @@ inline PassDefects FindDefects(const MeshingPass &pass)
     output.faces = pass.triangles;
     defects.intersections = SelfIntersectingPairs(output);
     for (int c = 0; c < int(pass.polygons.size()); ++c)
-        for (const auto &[i, j] : CrossingPolygonEdges(pass.polygons[c], pass.positions, pass.cellNormal[c]))
+        if (pass.cellMethod[c] != CellMethod::InputFaces)  // its own faces: nothing folds
+            for (const auto &[i, j] : CrossingPolygonEdges(pass.polygons[c], pass.positions, pass.cellNormal[c]))
             defects.crossings.push_back({c, i, j});
     return defects;
 }
@@ -299,6 +341,24 @@ inline int RespondToDefects(const MeshingSurface &s, const MeshingPass &pass, co
     return changes;
 }
 
+/// Marks the cells of the intersecting faces of `pass` to keep their input faces, with every
+/// vertex of their loops a pinned anchor, but for cells flagged in `excluded`. Returns how many
+/// cells it marked.
+inline int KeepCellsOfIntersectingFaces(const MeshingSurface &s, const MeshingPass &pass, const PassDefects &defects,
+                                        const std::vector<char> &excluded, std::vector<char> &requiredAnchors,
+                                        std::vector<char> &pinnedAnchors, std::vector<char> &inputCells)
+{
+    int marked = 0;
+    for (const auto &[f, g] : defects.intersections)
+        for (int c : {pass.triangleCell[f], pass.triangleCell[g]}) {
+            if (inputCells[c] || excluded[c]) continue;
+            inputCells[c] = 1;
+            ++marked;
+            for (int v : s.cellLoop[c]) requiredAnchors[v] = pinnedAnchors[v] = 1;
+        }
+    return marked;
+}
+
 }  // namespace detail
 
 /// Builds the approximating mesh of a partitioned mesh into `out` (cleared first).
@@ -344,21 +404,53 @@ MeshingReport BuildApproximatingMesh(const IndexedMesh &in, const Partition &par
     // Passes: each one responds to the defects of the previous one (see RespondToDefects);
     // the pass with the fewest defects (the earliest on ties) is the output.
     std::vector<char> requiredAnchors(s.VertexCount(), 0), pinnedAnchors(s.VertexCount(), 0);
-    detail::MeshingPass pass = detail::RunMeshingPass<CoordType>(s, proxies, param, requiredAnchors, pinnedAnchors);
+    std::vector<char> inputCells(s.CellCount(), 0);
+    detail::MeshingPass pass =
+        detail::RunMeshingPass<CoordType>(s, proxies, param, requiredAnchors, pinnedAnchors, inputCells);
     detail::PassDefects defects;
     if (param.repairRounds > 0) defects = detail::FindDefects(pass);
     size_t fewest = defects.Count();
+    detail::PassDefects fewestDefects = defects;
     detail::MeshingPass latest;
-    for (int round = 1; round <= param.repairRounds && defects.Count() > 0; ++round) {
-        if (cb) cb(20 + 50 * round / (param.repairRounds + 1), "VSA meshing: repairing folds and self-intersections");
+    int round = 1;
+    for (; round <= param.repairRounds && defects.Count() > 0; ++round) {
+        if (cb) cb(20 + 50 * round / (2 * param.repairRounds + 1), "VSA meshing: repairing folds and self-intersections");
         const detail::MeshingPass &previous = round == 1 ? pass : latest;
         if (detail::RespondToDefects(s, previous, defects, requiredAnchors, pinnedAnchors) == 0) break;
-        latest = detail::RunMeshingPass<CoordType>(s, proxies, param, requiredAnchors, pinnedAnchors);
+        latest = detail::RunMeshingPass<CoordType>(s, proxies, param, requiredAnchors, pinnedAnchors, inputCells);
         defects = detail::FindDefects(latest);
         if (defects.Count() < fewest) {
             fewest = defects.Count();
+            fewestDefects = defects;
             pass = latest;
             report.repairRounds = round;
+        }
+    }
+    // Last resort, from the best pass: cells of intersecting faces keep their input faces, until
+    // none is left; except cells where the input itself intersects, which that cannot help.
+    if (!fewestDefects.intersections.empty()) {
+        std::vector<char> intersectingInput(s.CellCount(), 0);
+        std::vector<int> cellOfInputFace(in.FaceCount(), -1);
+        for (int f = 0; f < s.FaceCount(); ++f) cellOfInputFace[s.sourceFace[f]] = s.faceCell[f];
+        for (const auto &[f, g] : detail::SelfIntersectingPairs(in))
+            for (int c : {cellOfInputFace[f], cellOfInputFace[g]})
+                if (c >= 0) intersectingInput[c] = 1;
+        // It costs faces: taken only when it leaves fewer intersecting pairs.
+        size_t fewestIntersections = fewestDefects.intersections.size();
+        defects = fewestDefects;
+        latest = pass;
+        for (int last = round + param.repairRounds; round < last && !defects.intersections.empty(); ++round) {
+            if (cb) cb(20 + 50 * round / (2 * param.repairRounds + 1), "VSA meshing: keeping input faces against self-intersections");
+            if (detail::KeepCellsOfIntersectingFaces(s, latest, defects, intersectingInput, requiredAnchors,
+                                                     pinnedAnchors, inputCells) == 0)
+                break;
+            latest = detail::RunMeshingPass<CoordType>(s, proxies, param, requiredAnchors, pinnedAnchors, inputCells);
+            defects = detail::FindDefects(latest);
+            if (defects.intersections.size() < fewestIntersections) {
+                fewestIntersections = defects.intersections.size();
+                pass = latest;
+                report.repairRounds = round;
+            }
         }
     }
     report.repairAnchors = pass.anchors.required;
@@ -389,6 +481,7 @@ MeshingReport BuildApproximatingMesh(const IndexedMesh &in, const Partition &par
         case CellMethod::Flooding: ++report.regionsByFlooding; break;
         case CellMethod::EarClipping: ++report.regionsByEarClipping; break;
         case CellMethod::SteinerFan: ++report.regionsWithSteinerVertex; break;
+        case CellMethod::InputFaces: ++report.regionsKeptAsInput; break;
         }
     }
 

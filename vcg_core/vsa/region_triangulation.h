@@ -58,7 +58,8 @@ enum class CellMethod
 {
     Flooding,     ///< every triangle came from the discrete flooding
     EarClipping,  ///< the flooding was incomplete or unusable; ear clipping finished it
-    SteinerFan    ///< no valid triangulation on the anchors alone: a fan around an extra vertex
+    SteinerFan,   ///< no valid triangulation on the anchors alone: a fan around an extra vertex
+    InputFaces    ///< every other triangulation intersected the output: the cell's own input faces
 };
 
 /// Triangles of one cell, on output vertex indices (anchor indices; the extra vertex of a fan
