@@ -168,11 +168,13 @@ public:
 
     /// Runs Lloyd iterations (flood, then fit) until the relative energy change is at most
     /// Param::tolerance, the partition repeats, or `maxIterations` were run; with
-    /// Param::teleport, converging triggers a teleport while that keeps lowering the energy.
+    /// Param::teleport, converging or stalling (under 0.1% per iteration) triggers a teleport
+    /// while that keeps lowering the energy.
     /// Leaves the best partition seen since the last change of proxy count as the current one.
     /// Returns the number of iterations run.
     int Run(int maxIterations, CallBackPos *cb = nullptr)
     {
+        constexpr double kTeleportStall = 1e-3;
         RequireInitialized("Run");
         if (maxIterations < 0) throw std::invalid_argument("The number of iterations cannot be negative.");
         int done = 0;
@@ -190,10 +192,13 @@ public:
             const uint64_t hash = HashLabels();
             const bool cycled = std::find(labelHashes_.begin(), labelHashes_.end(), hash) != labelHashes_.end();
             labelHashes_.push_back(hash);
-            const bool converged = energy == 0 || std::abs(previous - energy) <= param_.tolerance * previous;
+            const double change = std::abs(previous - energy);
+            const bool converged = energy == 0 || change <= param_.tolerance * previous;
+            // Lloyd creeping along (under 0.1% per iteration) is as good a time to teleport.
+            const bool stalled = converged || change <= kTeleportStall * previous;
             previous = energy;
             if (cb) cb(maxIterations > 0 ? 100 * done / maxIterations : 100, "VSA: Lloyd iterations");
-            if (!cycled && !converged) continue;
+            if (!cycled && !stalled) continue;
             if (param_.teleport && done < maxIterations && best_.Energy() < bestAtLastTeleport) {
                 bestAtLastTeleport = best_.Energy();
                 if (WithMetric([&](const auto &metric, auto &ws) { return TeleportWith(metric, ws); })) {
@@ -202,6 +207,7 @@ public:
                     continue;
                 }
             }
+            if (!cycled && !converged) continue;
             stop = cycled ? "stopped on a cycle after " + std::to_string(done) + " iterations"
                           : "converged after " + std::to_string(done) + " iterations";
             break;
