@@ -244,8 +244,8 @@ void AddRandomSeeds(const Metric &metric, const FaceGeometry &g, RegionState &s,
 }  // namespace detail
 
 /// Random seeding: one proxy at a random face of every component, the others at distinct faces
-/// drawn uniformly, each with its face's plane; then one flood. With a target energy, the
-/// number of proxies doubles (with relaxations) until the target is met.
+/// drawn uniformly, each with its face's plane; then one flood and the relaxations. With a
+/// target energy, the number of proxies doubles (with relaxations) until the target is met.
 template <class Metric>
 void SeedRandomly(const IndexedMesh &mesh, const Metric &metric, const FaceGeometry &g, RegionState &s,
                   const SeedingGoal &goal, SeedRandom &random, PartitionWorkspace<Metric> &ws, CallBackPos *cb = nullptr)
@@ -262,6 +262,7 @@ void SeedRandomly(const IndexedMesh &mesh, const Metric &metric, const FaceGeome
     detail::AddRandomSeeds(metric, g, s, goal.proxyCount - s.RegionCount(), random);
     FloodFromSeeds(mesh, metric, s, ws);
     MeasureRegions(metric, s);
+    detail::Relax(mesh, metric, s, ws, goal.relaxations);
 }
 
 /// Farthest seeding: starts from a random face per component, then adds one proxy at a time
