@@ -30,7 +30,8 @@ struct SweepCase
 /// Partitions and meshes one case; checks what must hold whatever the geometry: the output
 /// is a manifold, oriented, closed where the input is, with the input's components and Euler
 /// characteristic, no degenerate or duplicate face, and no region lost.
-void CheckCase(const SweepCase &c, bool print, MeshingReport *report = nullptr)
+void CheckCase(const SweepCase &c, bool print, const MeshingParam &param = MeshingParam(),
+               MeshingReport *report = nullptr)
 {
     TMesh m;
     std::string error;
@@ -45,7 +46,7 @@ void CheckCase(const SweepCase &c, bool print, MeshingReport *report = nullptr)
     ASSERT_TRUE(partition.ok) << partition.error;
     TMesh out;
     const auto start = std::chrono::steady_clock::now();
-    const MeshingReport r = BuildApproximatingMesh(im, partition.partition, MeshingParam(), out);
+    const MeshingReport r = BuildApproximatingMesh(im, partition.partition, param, out);
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     ASSERT_TRUE(r.ok) << r.error;
     const MeshValidity &v = r.validity;
@@ -85,17 +86,39 @@ TEST(MeshingRealMeshes, ClosedAndOpenMeshesStayValid)
 
 TEST(MeshingRealMeshes, CellsThatKeepIntersectingFallBackToTheirInputFaces)
 {
-    // At these k the anchor repairs alone leave self-intersections (46 pairs on turbine);
-    // keeping the offending cells' own input faces removes them, the inputs being clean.
-    for (const SweepCase &c : {SweepCase{"rotor.off", 20, SeedingMethod::Hierarchical},
-                               SweepCase{"turbine.off", 50, SeedingMethod::Hierarchical}}) {
+    // At these k the anchor repairs alone leave self-intersections; keeping the offending
+    // regions' own input faces removes them (the inputs are clean) within the face budget.
+    for (const SweepCase &c : {SweepCase{"couplingdown.off", 50, SeedingMethod::Hierarchical},
+                               SweepCase{"homer.off", 50, SeedingMethod::Hierarchical}}) {
         MeshingReport r;
-        CheckCase(c, false, &r);
+        CheckCase(c, false, MeshingParam(), &r);
         EXPECT_GT(r.regionsKeptAsInput, 0) << c.mesh;
         EXPECT_EQ(r.validity.selfIntersections, 0) << c.mesh;
         EXPECT_EQ(r.regionsByFlooding + r.regionsByEarClipping + r.regionsWithSteinerVertex + r.regionsKeptAsInput,
                   r.regions);
+        MeshingParam never;
+        never.maxInputFacesGrowth = 0;
+        MeshingReport without;
+        CheckCase(c, false, never, &without);
+        EXPECT_EQ(without.regionsKeptAsInput, 0) << c.mesh;
+        EXPECT_GT(without.validity.selfIntersections, 0) << c.mesh;
     }
+}
+
+TEST(MeshingRealMeshes, InputFacesOnlyWithinTheFaceBudget)
+{
+    // Turbine at k=50 needs more than twice the faces to lose its intersections: by default it
+    // keeps them (reported), unbounded it has none.
+    const SweepCase c{"turbine.off", 50, SeedingMethod::Hierarchical};
+    MeshingReport bounded, unbounded;
+    CheckCase(c, false, MeshingParam(), &bounded);
+    MeshingParam any;
+    any.maxInputFacesGrowth = 1e9;
+    CheckCase(c, false, any, &unbounded);
+    EXPECT_EQ(unbounded.validity.selfIntersections, 0);
+    EXPECT_GT(unbounded.regionsKeptAsInput, 0);
+    EXPECT_GT(bounded.validity.selfIntersections, 0);
+    EXPECT_LT(bounded.validity.faces, unbounded.validity.faces);
 }
 
 TEST(MeshingSweep, RealMeshes)

@@ -50,6 +50,10 @@ struct MeshingParam
     /// first output as it is. On CGAL's 85 sample meshes that do not intersect themselves, at
     /// k=50, 4 rounds left 13 outputs with self-intersections, 12 left 7, for a few ms each.
     int repairRounds = 12;
+    /// Last resort, when those passes leave self-intersections: the regions concerned keep
+    /// their input faces, provided that at most multiplies the output's faces by this (0: never).
+    /// Beyond that the output keeps its intersections, reported: k is too small for the shape.
+    double maxInputFacesGrowth = 2;
 };
 
 struct MeshingReport
@@ -390,8 +394,9 @@ MeshingReport BuildApproximatingMesh(const IndexedMesh &in, const Partition &par
     for (int r : partition.faceRegion)
         if (r < 0 || r >= regionCount)
             return fail("a face has region " + std::to_string(r) + ", outside [0, " + std::to_string(regionCount) + ")");
-    if (!(param.chordThreshold >= 0) || !(param.maxAnchorMove >= 0) || param.repairRounds < 0)
-        return fail("chordThreshold, maxAnchorMove and repairRounds must be non-negative");
+    if (!(param.chordThreshold >= 0) || !(param.maxAnchorMove >= 0) || param.repairRounds < 0 ||
+        !(param.maxInputFacesGrowth >= 0))
+        return fail("chordThreshold, maxAnchorMove, repairRounds and maxInputFacesGrowth must be non-negative");
 
     if (cb) cb(0, "VSA meshing: cutting regions into discs");
     MeshingSurface s;
@@ -428,15 +433,16 @@ MeshingReport BuildApproximatingMesh(const IndexedMesh &in, const Partition &par
     }
     // Last resort, from the best pass: cells of intersecting faces keep their input faces, until
     // none is left; except cells where the input itself intersects, which that cannot help.
-    if (!fewestDefects.intersections.empty()) {
+    if (!fewestDefects.intersections.empty() && param.maxInputFacesGrowth > 0) {
         std::vector<char> intersectingInput(s.CellCount(), 0);
         std::vector<int> cellOfInputFace(in.FaceCount(), -1);
         for (int f = 0; f < s.FaceCount(); ++f) cellOfInputFace[s.sourceFace[f]] = s.faceCell[f];
         for (const auto &[f, g] : detail::SelfIntersectingPairs(in))
             for (int c : {cellOfInputFace[f], cellOfInputFace[g]})
                 if (c >= 0) intersectingInput[c] = 1;
-        // It costs faces: taken only when it leaves fewer intersecting pairs.
+        // It costs faces: taken only when it leaves fewer intersecting pairs within the budget.
         size_t fewestIntersections = fewestDefects.intersections.size();
+        const double faceBudget = param.maxInputFacesGrowth * double(pass.triangles.size());
         defects = fewestDefects;
         latest = pass;
         for (int last = round + param.repairRounds; round < last && !defects.intersections.empty(); ++round) {
@@ -445,6 +451,7 @@ MeshingReport BuildApproximatingMesh(const IndexedMesh &in, const Partition &par
                                                      pinnedAnchors, inputCells) == 0)
                 break;
             latest = detail::RunMeshingPass<CoordType>(s, proxies, param, requiredAnchors, pinnedAnchors, inputCells);
+            if (double(latest.triangles.size()) > faceBudget) break;  // and it only grows
             defects = detail::FindDefects(latest);
             if (defects.intersections.size() < fewestIntersections) {
                 fewestIntersections = defects.intersections.size();
