@@ -89,7 +89,7 @@ TEST(MeshingRealMeshes, CellsThatKeepIntersectingFallBackToTheirInputFaces)
     // At these k the anchor repairs alone leave self-intersections; keeping the offending
     // regions' own input faces removes them (the inputs are clean) within the face budget.
     for (const SweepCase &c : {SweepCase{"couplingdown.off", 50, SeedingMethod::Hierarchical},
-                               SweepCase{"homer.off", 50, SeedingMethod::Hierarchical}}) {
+                               SweepCase{"helmet.off", 20, SeedingMethod::Hierarchical}}) {
         MeshingReport r;
         CheckCase(c, false, MeshingParam(), &r);
         EXPECT_GT(r.regionsKeptAsInput, 0) << c.mesh;

@@ -168,8 +168,8 @@ public:
 
     /// Runs Lloyd iterations (flood, then fit) until the relative energy change is at most
     /// Param::tolerance, the partition repeats, or `maxIterations` were run; with
-    /// Param::teleport, converging or stalling (under 0.1% per iteration) triggers a teleport
-    /// while that keeps lowering the energy.
+    /// Param::teleport, converging or stalling (under 0.1% per iteration, or two iterations
+    /// without a new best) triggers a teleport while that keeps lowering the energy.
     /// Leaves the best partition seen since the last change of proxy count as the current one.
     /// Returns the number of iterations run.
     int Run(int maxIterations, CallBackPos *cb = nullptr)
@@ -179,6 +179,7 @@ public:
         if (maxIterations < 0) throw std::invalid_argument("The number of iterations cannot be negative.");
         int done = 0;
         int teleports = 0;
+        int sinceBest = 0;  // iterations since the best energy last fell
         double previous = Energy();
         double bestAtLastTeleport = std::numeric_limits<double>::infinity();
         std::string stop = "stopped after the maximum of " + std::to_string(maxIterations) + " iterations";
@@ -188,14 +189,20 @@ public:
             ++iterations_;
             const double energy = Energy();
             history_.push_back(energy);
-            if (!hasBest_ || energy < best_.Energy()) KeepAsBest();
+            if (!hasBest_ || energy < best_.Energy()) {
+                KeepAsBest();
+                sinceBest = 0;
+            } else {
+                ++sinceBest;
+            }
             const uint64_t hash = HashLabels();
             const bool cycled = std::find(labelHashes_.begin(), labelHashes_.end(), hash) != labelHashes_.end();
             labelHashes_.push_back(hash);
             const double change = std::abs(previous - energy);
             const bool converged = energy == 0 || change <= param_.tolerance * previous;
-            // Lloyd creeping along (under 0.1% per iteration) is as good a time to teleport.
-            const bool stalled = converged || change <= kTeleportStall * previous;
+            // Lloyd creeping along (under 0.1% per iteration) or going round without bettering
+            // its best (an oscillation the label hashes miss) is as good a time to teleport.
+            const bool stalled = converged || change <= kTeleportStall * previous || sinceBest >= 2;
             previous = energy;
             if (cb) cb(maxIterations > 0 ? 100 * done / maxIterations : 100, "VSA: Lloyd iterations");
             if (!cycled && !stalled) continue;
