@@ -373,17 +373,28 @@ TEST(PartitionApproximation, TeleportLeavesAStuckMinimum)
     FAIL() << "no random seeding got stuck: this test needs another seed range";
 }
 
+namespace {
+
+/// The same run from random seeds with a zero tolerance (so only stalls can trigger a
+/// teleport), without and with teleports.
+std::pair<ApproximationResult, ApproximationResult> WithoutAndWithTeleports(const char *mesh, int k, uint64_t seed)
+{
+    const IndexedMesh im = vsa_test::LoadCgalMesh(mesh);
+    ApproximationParam p = Params(k, MetricKind::L21, SeedingMethod::Random, seed);
+    p.tolerance = 0;
+    p.teleport = false;
+    ApproximationResult lloyd = Approximate(im, p);
+    p.teleport = true;
+    return {std::move(lloyd), Approximate(im, p)};
+}
+
+}  // namespace
+
 TEST(PartitionApproximation, TeleportAlsoWhenLloydOnlyCreeps)
 {
     // Random seeds on a CAD shape: Lloyd keeps improving by a hair per iteration and never
     // meets a zero tolerance, yet teleporting proxies out of crowded flat sides pays off.
-    const IndexedMesh im = vsa_test::LoadCgalMesh("fandisk.off");
-    ApproximationParam p = Params(100, MetricKind::L21, SeedingMethod::Random, 1);
-    p.tolerance = 0;
-    p.teleport = false;
-    const ApproximationResult lloyd = Approximate(im, p);
-    p.teleport = true;
-    const ApproximationResult teleported = Approximate(im, p);
+    const auto [lloyd, teleported] = WithoutAndWithTeleports("fandisk.off", 100, 1);
     ASSERT_TRUE(lloyd.ok && teleported.ok);
     bool said = false;
     for (const std::string &message : teleported.messages) said |= message.find("teleport") != std::string::npos;
@@ -395,13 +406,7 @@ TEST(PartitionApproximation, TeleportWhenLloydOscillates)
 {
     // Random seeds on blade at k=500: Lloyd swings between two partitions worse than its
     // seeding, each step over 0.1%, never repeating exactly; teleports find the exact fit.
-    const IndexedMesh im = vsa_test::LoadCgalMesh("blade.off");
-    ApproximationParam p = Params(500, MetricKind::L21, SeedingMethod::Random, 3);
-    p.tolerance = 0;
-    p.teleport = false;
-    const ApproximationResult lloyd = Approximate(im, p);
-    p.teleport = true;
-    const ApproximationResult teleported = Approximate(im, p);
+    const auto [lloyd, teleported] = WithoutAndWithTeleports("blade.off", 500, 3);
     ASSERT_TRUE(lloyd.ok && teleported.ok);
     EXPECT_GT(lloyd.energy, 1e-6 * lloyd.referenceEnergy);  // 0.057 of 5106 when written
     EXPECT_LT(teleported.energy, 1e-12 * lloyd.referenceEnergy);
