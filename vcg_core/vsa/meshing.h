@@ -162,7 +162,39 @@ struct MeshingPass
     /// to OFF/OBJ, as one polygon per disc rather than being lost by the polygon export.
     OutputRegistry cellOutlines;
     int pinnedAnchors = 0;          ///< anchors kept at their input vertex
+    /// Per cell, for the next pass: its polygon and its triangles on surface vertices, and its
+    /// polygon's positions; no triangles where they cannot be reused (a fan, input faces).
+    std::vector<std::vector<int>> cellPolygonVertices;
+    std::vector<std::vector<Point3d>> cellPolygonPositions;
+    std::vector<std::vector<std::array<int, 3>>> cellTriangleVertices;
 };
+
+/// Cell c's triangles of `previous` on the current anchors, when its polygon is the same (same
+/// vertices, same positions) and they clash with nothing already in `registry`; else empty.
+/// Re-triangulating only the cells a repair changed keeps repair rounds cheap on big meshes.
+inline std::vector<std::array<int, 3>> ReusableTriangles(const MeshingPass *previous, int c,
+                                                          const std::vector<int> &polygonVertices,
+                                                          const std::vector<Point3d> &polygonPositions,
+                                                          const AnchorSet &anchors, const OutputRegistry &registry)
+{
+    std::vector<std::array<int, 3>> triangles;
+    if (!previous || previous->cellTriangleVertices[c].empty() || previous->cellPolygonVertices[c] != polygonVertices ||
+        previous->cellPolygonPositions[c] != polygonPositions)
+        return triangles;
+    OutputRegistry own;  // the polygon's edges are in the registry already, as they should be
+    for (size_t k = 0; k < polygonVertices.size(); ++k)
+        own.AddEdge(polygonVertices[k], polygonVertices[(k + 1) % polygonVertices.size()]);
+    for (const auto &t : previous->cellTriangleVertices[c]) {
+        const std::array<int, 3> mapped{anchors.anchorOfVertex[t[0]], anchors.anchorOfVertex[t[1]],
+                                        anchors.anchorOfVertex[t[2]]};
+        bool clash = registry.HasFace(mapped);
+        for (int i = 0; i < 3 && !clash; ++i)
+            clash = !own.HasEdge(t[i], t[(i + 1) % 3]) && registry.HasEdge(mapped[i], mapped[(i + 1) % 3]);
+        if (clash) return {};
+        triangles.push_back(mapped);
+    }
+    return triangles;
+}
 
 /// Cell c as its own input faces, the last resort against self-intersections: every vertex of
 /// its loop must be a pinned anchor (so its neighbours meet it on the input's boundary); its
@@ -201,7 +233,7 @@ void KeepInputFaces(const MeshingSurface &s, int c, OutputRegistry &registry, Me
 template <class CoordType>
 MeshingPass RunMeshingPass(const MeshingSurface &s, const std::vector<Proxy> &proxies, const MeshingParam &param,
                            const std::vector<char> &requiredAnchors, const std::vector<char> &pinnedAnchors,
-                           const std::vector<char> &inputCells)
+                           const std::vector<char> &inputCells, const MeshingPass *previous = nullptr)
 {
     MeshingPass pass;
     pass.anchors = SelectAnchors(s, proxies, param.chordThreshold, requiredAnchors);
@@ -225,24 +257,46 @@ MeshingPass RunMeshingPass(const MeshingSurface &s, const std::vector<Proxy> &pr
     }
     pass.cellMethod.resize(s.CellCount());
     pass.cellNormal.resize(s.CellCount());
+    pass.cellPolygonVertices.resize(s.CellCount());
+    pass.cellPolygonPositions.resize(s.CellCount());
+    pass.cellTriangleVertices.resize(s.CellCount());
     // Then the cells kept as input faces: the others must triangulate around their edges too.
     for (int c = 0; c < s.CellCount(); ++c)
         if (inputCells[c]) KeepInputFaces<CoordType>(s, c, registry, pass);
     CellFlooding flooding(s);
     for (int c = 0; c < s.CellCount(); ++c) {
         if (inputCells[c]) continue;
-        const CellTriangulation cell = TriangulateCell(s, c, pass.polygons[c], pass.positions, proxies[s.cellRegion[c]],
-                                                       anchors, flooding, registry, int(pass.positions.size()));
-        if (cell.steinerVertex >= 0) {
-            pass.positions.push_back(Point3d::Construct(CoordType::Construct(cell.steinerPosition)));
-            pass.vertexSource.push_back(cell.steinerSourceVertex);
+        std::vector<int> &polygonVertices = pass.cellPolygonVertices[c];
+        std::vector<Point3d> &polygonPositions = pass.cellPolygonPositions[c];
+        for (int a : pass.polygons[c]) {
+            polygonVertices.push_back(anchors.vertexOfAnchor[a]);
+            polygonPositions.push_back(pass.positions[a]);
         }
-        for (const auto &t : cell.triangles) {
+        std::vector<std::array<int, 3>> triangles =
+            ReusableTriangles(previous, c, polygonVertices, polygonPositions, anchors, registry);
+        if (!triangles.empty()) {
+            for (const auto &t : triangles) registry.AddFace(t);
+            pass.cellMethod[c] = previous->cellMethod[c];
+            pass.cellNormal[c] = previous->cellNormal[c];
+        } else {
+            CellTriangulation cell = TriangulateCell(s, c, pass.polygons[c], pass.positions, proxies[s.cellRegion[c]],
+                                                     anchors, flooding, registry, int(pass.positions.size()));
+            if (cell.steinerVertex >= 0) {
+                pass.positions.push_back(Point3d::Construct(CoordType::Construct(cell.steinerPosition)));
+                pass.vertexSource.push_back(cell.steinerSourceVertex);
+            }
+            triangles = std::move(cell.triangles);
+            pass.cellMethod[c] = cell.method;
+            pass.cellNormal[c] = cell.planeNormal;
+        }
+        if (pass.cellMethod[c] != CellMethod::SteinerFan)
+            for (const auto &t : triangles)
+                pass.cellTriangleVertices[c].push_back(
+                    {anchors.vertexOfAnchor[t[0]], anchors.vertexOfAnchor[t[1]], anchors.vertexOfAnchor[t[2]]});
+        for (const auto &t : triangles) {
             pass.triangles.push_back(t);
             pass.triangleCell.push_back(c);
         }
-        pass.cellMethod[c] = cell.method;
-        pass.cellNormal[c] = cell.planeNormal;
     }
     return pass;
 }
@@ -345,6 +399,19 @@ inline int RespondToDefects(const MeshingSurface &s, const MeshingPass &pass, co
     return changes;
 }
 
+/// The output's face count if the cells of the intersecting faces of `pass` kept their input
+/// faces: a first round that would already break the budget need not be tried.
+inline double FacesKeepingInput(const MeshingSurface &s, const MeshingPass &pass, const PassDefects &defects)
+{
+    std::vector<char> keep(s.CellCount(), 0);
+    for (const auto &[f, g] : defects.intersections) keep[pass.triangleCell[f]] = keep[pass.triangleCell[g]] = 1;
+    double faces = 0;
+    for (int c : pass.triangleCell) faces += !keep[c];
+    for (int c = 0; c < s.CellCount(); ++c)
+        if (keep[c]) faces += s.cellFaceOffset[c + 1] - s.cellFaceOffset[c];
+    return faces;
+}
+
 /// Marks the cells of the intersecting faces of `pass` to keep their input faces, with every
 /// vertex of their loops a pinned anchor, but for cells flagged in `excluded`. Returns how many
 /// cells it marked.
@@ -422,7 +489,8 @@ MeshingReport BuildApproximatingMesh(const IndexedMesh &in, const Partition &par
         if (cb) cb(20 + 50 * round / (2 * param.repairRounds + 1), "VSA meshing: repairing folds and self-intersections");
         const detail::MeshingPass &previous = round == 1 ? pass : latest;
         if (detail::RespondToDefects(s, previous, defects, requiredAnchors, pinnedAnchors) == 0) break;
-        latest = detail::RunMeshingPass<CoordType>(s, proxies, param, requiredAnchors, pinnedAnchors, inputCells);
+        latest = detail::RunMeshingPass<CoordType>(s, proxies, param, requiredAnchors, pinnedAnchors, inputCells,
+                                                   &previous);
         defects = detail::FindDefects(latest);
         if (defects.Count() < fewest) {
             fewest = defects.Count();
@@ -433,7 +501,8 @@ MeshingReport BuildApproximatingMesh(const IndexedMesh &in, const Partition &par
     }
     // Last resort, from the best pass: cells of intersecting faces keep their input faces, until
     // none is left; except cells where the input itself intersects, which that cannot help.
-    if (!fewestDefects.intersections.empty() && param.maxInputFacesGrowth > 0) {
+    if (!fewestDefects.intersections.empty() && param.maxInputFacesGrowth > 0 &&
+        detail::FacesKeepingInput(s, pass, fewestDefects) <= param.maxInputFacesGrowth * double(pass.triangles.size())) {
         std::vector<char> intersectingInput(s.CellCount(), 0);
         std::vector<int> cellOfInputFace(in.FaceCount(), -1);
         for (int f = 0; f < s.FaceCount(); ++f) cellOfInputFace[s.sourceFace[f]] = s.faceCell[f];
@@ -450,7 +519,8 @@ MeshingReport BuildApproximatingMesh(const IndexedMesh &in, const Partition &par
             if (detail::KeepCellsOfIntersectingFaces(s, latest, defects, intersectingInput, requiredAnchors,
                                                      pinnedAnchors, inputCells) == 0)
                 break;
-            latest = detail::RunMeshingPass<CoordType>(s, proxies, param, requiredAnchors, pinnedAnchors, inputCells);
+            latest = detail::RunMeshingPass<CoordType>(s, proxies, param, requiredAnchors, pinnedAnchors, inputCells,
+                                                       &latest);
             if (double(latest.triangles.size()) > faceBudget) break;  // and it only grows
             defects = detail::FindDefects(latest);
             if (defects.intersections.size() < fewestIntersections) {
