@@ -162,34 +162,35 @@ struct MeshingPass
     /// to OFF/OBJ, as one polygon per disc rather than being lost by the polygon export.
     OutputRegistry cellOutlines;
     int pinnedAnchors = 0;          ///< anchors kept at their input vertex
-    /// Per cell, for the next pass: its polygon and its triangles on surface vertices, and its
-    /// polygon's positions; no triangles where they cannot be reused (a fan, input faces).
-    std::vector<std::vector<int>> cellPolygonVertices;
-    std::vector<std::vector<Point3d>> cellPolygonPositions;
-    std::vector<std::vector<std::array<int, 3>>> cellTriangleVertices;
+    std::vector<std::pair<int, int>> cellTriangles;  ///< per cell: its range [first, last) in `triangles`
 };
 
-/// Cell c's triangles of `previous` on the current anchors, when its polygon is the same (same
-/// vertices, same positions) and they clash with nothing already in `registry`; else empty.
-/// Re-triangulating only the cells a repair changed keeps repair rounds cheap on big meshes.
-inline std::vector<std::array<int, 3>> ReusableTriangles(const MeshingPass *previous, int c,
-                                                          const std::vector<int> &polygonVertices,
-                                                          const std::vector<Point3d> &polygonPositions,
-                                                          const AnchorSet &anchors, const OutputRegistry &registry)
+/// Cell c's triangles of `previous` on the anchors of `pass`, when its polygon is the same in
+/// both (same input vertices at the same positions), they are on anchors only (no fan, no input
+/// faces) and they clash with nothing already in `registry`; else empty. Re-triangulating only
+/// the cells a repair changed keeps repair rounds cheap on big meshes.
+inline std::vector<std::array<int, 3>> ReusableTriangles(const MeshingPass *previous, const MeshingPass &pass, int c,
+                                                          const OutputRegistry &registry)
 {
-    std::vector<std::array<int, 3>> triangles;
-    if (!previous || previous->cellTriangleVertices[c].empty() || previous->cellPolygonVertices[c] != polygonVertices ||
-        previous->cellPolygonPositions[c] != polygonPositions)
-        return triangles;
+    if (!previous || previous->cellMethod[c] == CellMethod::SteinerFan ||
+        previous->cellMethod[c] == CellMethod::InputFaces)
+        return {};
+    const std::vector<int> &before = previous->polygons[c], &now = pass.polygons[c];
+    if (before.size() != now.size()) return {};
+    for (size_t k = 0; k < now.size(); ++k)
+        if (previous->anchors.vertexOfAnchor[before[k]] != pass.anchors.vertexOfAnchor[now[k]] ||
+            previous->positions[before[k]] != pass.positions[now[k]])
+            return {};
     OutputRegistry own;  // the polygon's edges are in the registry already, as they should be
-    for (size_t k = 0; k < polygonVertices.size(); ++k)
-        own.AddEdge(polygonVertices[k], polygonVertices[(k + 1) % polygonVertices.size()]);
-    for (const auto &t : previous->cellTriangleVertices[c]) {
-        const std::array<int, 3> mapped{anchors.anchorOfVertex[t[0]], anchors.anchorOfVertex[t[1]],
-                                        anchors.anchorOfVertex[t[2]]};
+    for (size_t k = 0; k < now.size(); ++k) own.AddEdge(now[k], now[(k + 1) % now.size()]);
+    std::vector<std::array<int, 3>> triangles;
+    for (int t = previous->cellTriangles[c].first; t < previous->cellTriangles[c].second; ++t) {
+        std::array<int, 3> mapped;
+        for (int i = 0; i < 3; ++i)
+            mapped[i] = pass.anchors.anchorOfVertex[previous->anchors.vertexOfAnchor[previous->triangles[t][i]]];
         bool clash = registry.HasFace(mapped);
         for (int i = 0; i < 3 && !clash; ++i)
-            clash = !own.HasEdge(t[i], t[(i + 1) % 3]) && registry.HasEdge(mapped[i], mapped[(i + 1) % 3]);
+            clash = !own.HasEdge(mapped[i], mapped[(i + 1) % 3]) && registry.HasEdge(mapped[i], mapped[(i + 1) % 3]);
         if (clash) return {};
         triangles.push_back(mapped);
     }
@@ -215,6 +216,7 @@ void KeepInputFaces(const MeshingSurface &s, int c, OutputRegistry &registry, Me
         return it->second;
     };
     Point3d normal(0, 0, 0);
+    pass.cellTriangles[c].first = int(pass.triangles.size());
     for (int k = s.cellFaceOffset[c]; k < s.cellFaceOffset[c + 1]; ++k) {
         const auto &f = s.faces[s.cellFaces[k]];
         const std::array<int, 3> t{output(f[0]), output(f[1]), output(f[2])};
@@ -223,6 +225,7 @@ void KeepInputFaces(const MeshingSurface &s, int c, OutputRegistry &registry, Me
         pass.triangleCell.push_back(c);
         normal += (s.positions[f[1]] - s.positions[f[0]]) ^ (s.positions[f[2]] - s.positions[f[0]]);
     }
+    pass.cellTriangles[c].second = int(pass.triangles.size());
     pass.cellMethod[c] = CellMethod::InputFaces;
     pass.cellNormal[c] = normal.Norm() > 0 ? normal / normal.Norm() : Point3d(0, 0, 1);
 }
@@ -257,23 +260,14 @@ MeshingPass RunMeshingPass(const MeshingSurface &s, const std::vector<Proxy> &pr
     }
     pass.cellMethod.resize(s.CellCount());
     pass.cellNormal.resize(s.CellCount());
-    pass.cellPolygonVertices.resize(s.CellCount());
-    pass.cellPolygonPositions.resize(s.CellCount());
-    pass.cellTriangleVertices.resize(s.CellCount());
+    pass.cellTriangles.resize(s.CellCount());
     // Then the cells kept as input faces: the others must triangulate around their edges too.
     for (int c = 0; c < s.CellCount(); ++c)
         if (inputCells[c]) KeepInputFaces<CoordType>(s, c, registry, pass);
     CellFlooding flooding(s);
     for (int c = 0; c < s.CellCount(); ++c) {
         if (inputCells[c]) continue;
-        std::vector<int> &polygonVertices = pass.cellPolygonVertices[c];
-        std::vector<Point3d> &polygonPositions = pass.cellPolygonPositions[c];
-        for (int a : pass.polygons[c]) {
-            polygonVertices.push_back(anchors.vertexOfAnchor[a]);
-            polygonPositions.push_back(pass.positions[a]);
-        }
-        std::vector<std::array<int, 3>> triangles =
-            ReusableTriangles(previous, c, polygonVertices, polygonPositions, anchors, registry);
+        std::vector<std::array<int, 3>> triangles = ReusableTriangles(previous, pass, c, registry);
         if (!triangles.empty()) {
             for (const auto &t : triangles) registry.AddFace(t);
             pass.cellMethod[c] = previous->cellMethod[c];
@@ -289,14 +283,12 @@ MeshingPass RunMeshingPass(const MeshingSurface &s, const std::vector<Proxy> &pr
             pass.cellMethod[c] = cell.method;
             pass.cellNormal[c] = cell.planeNormal;
         }
-        if (pass.cellMethod[c] != CellMethod::SteinerFan)
-            for (const auto &t : triangles)
-                pass.cellTriangleVertices[c].push_back(
-                    {anchors.vertexOfAnchor[t[0]], anchors.vertexOfAnchor[t[1]], anchors.vertexOfAnchor[t[2]]});
+        pass.cellTriangles[c].first = int(pass.triangles.size());
         for (const auto &t : triangles) {
             pass.triangles.push_back(t);
             pass.triangleCell.push_back(c);
         }
+        pass.cellTriangles[c].second = int(pass.triangles.size());
     }
     return pass;
 }
@@ -399,12 +391,20 @@ inline int RespondToDefects(const MeshingSurface &s, const MeshingPass &pass, co
     return changes;
 }
 
+/// Per cell of `pass`: whether one of its faces intersects another.
+inline std::vector<char> CellsOfIntersectingFaces(const MeshingSurface &s, const MeshingPass &pass,
+                                                  const PassDefects &defects)
+{
+    std::vector<char> flagged(s.CellCount(), 0);
+    for (const auto &[f, g] : defects.intersections) flagged[pass.triangleCell[f]] = flagged[pass.triangleCell[g]] = 1;
+    return flagged;
+}
+
 /// The output's face count if the cells of the intersecting faces of `pass` kept their input
 /// faces: a first round that would already break the budget need not be tried.
 inline double FacesKeepingInput(const MeshingSurface &s, const MeshingPass &pass, const PassDefects &defects)
 {
-    std::vector<char> keep(s.CellCount(), 0);
-    for (const auto &[f, g] : defects.intersections) keep[pass.triangleCell[f]] = keep[pass.triangleCell[g]] = 1;
+    const std::vector<char> keep = CellsOfIntersectingFaces(s, pass, defects);
     double faces = 0;
     for (int c : pass.triangleCell) faces += !keep[c];
     for (int c = 0; c < s.CellCount(); ++c)
@@ -419,14 +419,14 @@ inline int KeepCellsOfIntersectingFaces(const MeshingSurface &s, const MeshingPa
                                         const std::vector<char> &excluded, std::vector<char> &requiredAnchors,
                                         std::vector<char> &pinnedAnchors, std::vector<char> &inputCells)
 {
+    const std::vector<char> flagged = CellsOfIntersectingFaces(s, pass, defects);
     int marked = 0;
-    for (const auto &[f, g] : defects.intersections)
-        for (int c : {pass.triangleCell[f], pass.triangleCell[g]}) {
-            if (inputCells[c] || excluded[c]) continue;
-            inputCells[c] = 1;
-            ++marked;
-            for (int v : s.cellLoop[c]) requiredAnchors[v] = pinnedAnchors[v] = 1;
-        }
+    for (int c = 0; c < s.CellCount(); ++c) {
+        if (!flagged[c] || inputCells[c] || excluded[c]) continue;
+        inputCells[c] = 1;
+        ++marked;
+        for (int v : s.cellLoop[c]) requiredAnchors[v] = pinnedAnchors[v] = 1;
+    }
     return marked;
 }
 
