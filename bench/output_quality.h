@@ -15,12 +15,12 @@ void AddOutputQualityKeys(JsonLine &line, InMeshType &input, OutMeshType &output
 {
     const vcg::tri::vsa::MeshValidity in = vcg::tri::vsa::CheckMeshValidity(input, false);
     const vcg::tri::vsa::MeshValidity out = vcg::tri::vsa::CheckMeshValidity(output);
-    line.Add("closed_in", in.closed)
+    line.Add("closed_in", in.IsClosed())
         .Add("out_vertices", out.vertices)
         .Add("out_faces", out.faces)
-        .Add("manifold", out.manifold)
-        .Add("closed", out.closed)
-        .Add("oriented", out.oriented)
+        .Add("manifold", out.IsTwoManifold())
+        .Add("closed", out.IsClosed())
+        .Add("oriented", out.IsOriented())
         .Add("euler_in", in.eulerCharacteristic)
         .Add("euler_out", out.eulerCharacteristic)
         .Add("degenerate_faces", out.degenerateFaces)

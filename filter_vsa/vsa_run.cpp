@@ -73,9 +73,9 @@ void Describe(const vsa::ShapeApproximationResult &r, const VsaFilterSettings &s
     f["anchors"] = m.anchors;
     f["regions_fallback"] = m.regionsByEarClipping + m.regionsWithSteinerVertex + m.regionsKeptAsInput;
     f["regions_kept_as_input"] = m.regionsKeptAsInput;
-    f["manifold"] = m.validity.manifold;
-    f["closed"] = m.validity.closed;
-    f["oriented"] = m.validity.oriented;
+    f["manifold"] = m.validity.IsTwoManifold();
+    f["closed"] = m.validity.IsClosed();
+    f["oriented"] = m.validity.IsOriented();
     f["seconds_seeding"] = r.secondsSeeding;
     f["seconds_iterations"] = r.secondsIterations;
     f["seconds_meshing"] = r.secondsMeshing;

@@ -139,11 +139,11 @@ void ExpectGoodApproximation(const ScriptCase &c, int k, bool inputClosed)
     ASSERT_TRUE(Load(out, c.approximation));
     ASSERT_TRUE(Load(regions, c.regions));
     const vcg::tri::vsa::MeshValidity validity = vcg::tri::vsa::CheckMeshValidity(out);
-    EXPECT_TRUE(validity.manifold) << validity.Summary();
-    EXPECT_TRUE(validity.oriented) << validity.Summary();
+    EXPECT_TRUE(validity.IsTwoManifold()) << validity.Summary();
+    EXPECT_TRUE(validity.IsOriented()) << validity.Summary();
     EXPECT_EQ(validity.degenerateFaces, 0) << validity.Summary();
     if (inputClosed) {
-        EXPECT_TRUE(validity.closed) << validity.Summary();
+        EXPECT_TRUE(validity.IsClosed()) << validity.Summary();
     }
     // A region becomes at least one triangle; far fewer faces than the input.
     EXPECT_GE(out.FN(), k);

@@ -38,9 +38,9 @@ TEST(MeshValidity, CubeIsClosedOrientedManifoldWithEulerTwo)
     EXPECT_EQ(v.degenerateFaces, 0);
     EXPECT_EQ(v.duplicateFaces, 0);
     EXPECT_EQ(v.selfIntersections, 0);
-    EXPECT_TRUE(v.manifold);
-    EXPECT_TRUE(v.closed);
-    EXPECT_TRUE(v.oriented);
+    EXPECT_TRUE(v.IsTwoManifold());
+    EXPECT_TRUE(v.IsClosed());
+    EXPECT_TRUE(v.IsOriented());
     EXPECT_TRUE(v.IsValid());
 }
 
@@ -58,7 +58,7 @@ TEST(MeshValidity, FinerClosedMeshesHaveNoFalseIntersections)
     EXPECT_EQ(v.faces, 20 * 64);
     EXPECT_EQ(v.selfIntersections, 0);
     EXPECT_EQ(v.eulerCharacteristic, 2);
-    EXPECT_TRUE(v.closed);
+    EXPECT_TRUE(v.IsClosed());
     EXPECT_TRUE(v.IsValid());
 }
 
@@ -69,9 +69,9 @@ TEST(MeshValidity, OpenSquareHasFourBorderEdges)
     EXPECT_EQ(v.edges, 5);
     EXPECT_EQ(v.borderEdges, 4);
     EXPECT_EQ(v.eulerCharacteristic, 1);  // a disc
-    EXPECT_FALSE(v.closed);
-    EXPECT_TRUE(v.manifold);
-    EXPECT_TRUE(v.oriented);
+    EXPECT_FALSE(v.IsClosed());
+    EXPECT_TRUE(v.IsTwoManifold());
+    EXPECT_TRUE(v.IsOriented());
     EXPECT_EQ(v.selfIntersections, 0);  // the two faces are coplanar and share an edge
     EXPECT_TRUE(v.IsValid());
 }
@@ -82,7 +82,7 @@ TEST(MeshValidity, NonManifoldEdgeAndVertex)
     MeshValidity v = Check({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}}, {{0, 1, 2}, {1, 0, 3}, {0, 1, 4}});
     EXPECT_EQ(v.nonManifoldEdges, 1);
     EXPECT_EQ(v.edges, 7);
-    EXPECT_FALSE(v.manifold);
+    EXPECT_FALSE(v.IsTwoManifold());
     EXPECT_EQ(v.selfIntersections, 0);
 
     // Two tetrahedra sharing only vertex 0: closed, edge-manifold, one non-manifold vertex.
@@ -90,9 +90,9 @@ TEST(MeshValidity, NonManifoldEdgeAndVertex)
               {{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}, {0, 5, 4}, {0, 4, 6}, {0, 6, 5}, {4, 5, 6}});
     EXPECT_EQ(v.nonManifoldEdges, 0);
     EXPECT_EQ(v.nonManifoldVertices, 1);
-    EXPECT_TRUE(v.closed);
-    EXPECT_TRUE(v.oriented);
-    EXPECT_FALSE(v.manifold);
+    EXPECT_TRUE(v.IsClosed());
+    EXPECT_TRUE(v.IsOriented());
+    EXPECT_FALSE(v.IsTwoManifold());
     EXPECT_EQ(v.eulerCharacteristic, 7 - 12 + 8);
     EXPECT_EQ(v.selfIntersections, 0);
 }
@@ -158,7 +158,7 @@ TEST(MeshValidity, DuplicateDegenerateAndFlippedFaces)
 
     v = Check({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 1, 0}}, {{0, 1, 2}, {1, 2, 3}});
     EXPECT_EQ(v.inconsistentEdges, 1);
-    EXPECT_FALSE(v.oriented);
+    EXPECT_FALSE(v.IsOriented());
 }
 
 TEST(MeshValidity, WorksOnABareDoubleMeshAndCanSkipIntersections)

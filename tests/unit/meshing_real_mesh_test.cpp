@@ -51,9 +51,9 @@ void CheckCase(const SweepCase &c, bool print, const MeshingParam &param = Meshi
     ASSERT_TRUE(r.ok) << r.error;
     const MeshValidity &v = r.validity;
     const std::string what = c.mesh + " k=" + std::to_string(c.k) + " init=" + std::to_string(int(c.init));
-    EXPECT_TRUE(v.manifold) << what << ": " << v.Summary();
-    EXPECT_TRUE(v.oriented) << what << ": " << v.Summary();
-    EXPECT_EQ(v.closed, in.closed) << what << ": " << v.Summary();
+    EXPECT_TRUE(v.IsTwoManifold()) << what << ": " << v.Summary();
+    EXPECT_TRUE(v.IsOriented()) << what << ": " << v.Summary();
+    EXPECT_EQ(v.IsClosed(), in.IsClosed()) << what << ": " << v.Summary();
     EXPECT_EQ(v.components, in.components) << what << ": " << v.Summary();
     EXPECT_EQ(v.eulerCharacteristic, in.eulerCharacteristic) << what << ": " << v.Summary();
     EXPECT_EQ(v.degenerateFaces, 0) << what << ": " << v.Summary();

@@ -43,11 +43,11 @@ void ExpectValidWithInputTopology(const MeshingRun &run)
 {
     ASSERT_TRUE(run.report.ok) << run.report.error;
     const MeshValidity &v = run.report.validity;
-    EXPECT_TRUE(v.manifold) << v.Summary();
-    EXPECT_TRUE(v.oriented) << v.Summary();
+    EXPECT_TRUE(v.IsTwoManifold()) << v.Summary();
+    EXPECT_TRUE(v.IsOriented()) << v.Summary();
     EXPECT_EQ(v.degenerateFaces, 0) << v.Summary();
     EXPECT_EQ(v.duplicateFaces, 0) << v.Summary();
-    EXPECT_EQ(v.closed, run.inputValidity.closed) << v.Summary();
+    EXPECT_EQ(v.IsClosed(), run.inputValidity.IsClosed()) << v.Summary();
     EXPECT_EQ(v.components, run.inputValidity.components) << v.Summary();
     EXPECT_EQ(v.eulerCharacteristic, run.inputValidity.eulerCharacteristic) << v.Summary();
     EXPECT_EQ(int(run.report.faceRegion.size()), v.faces);
@@ -214,7 +214,7 @@ TEST(Meshing, TorusKeepsItsGenusWhateverTheRegions)
         ExpectValidWithInputTopology(run);
         ExpectNoRegionDropped(run, c.partition);
         EXPECT_EQ(run.report.validity.eulerCharacteristic, 0);
-        EXPECT_TRUE(run.report.validity.closed);
+        EXPECT_TRUE(run.report.validity.IsClosed());
         EXPECT_EQ(run.report.regionsCut, c.cut);
     }
 }
@@ -241,7 +241,7 @@ TEST(Meshing, BoxWithCylindricalHoleKeepsItsGenus)
         ExpectValidWithInputTopology(run);
         ExpectNoRegionDropped(run, *partition);
         EXPECT_EQ(run.report.validity.eulerCharacteristic, 0);
-        EXPECT_TRUE(run.report.validity.closed);
+        EXPECT_TRUE(run.report.validity.IsClosed());
         EXPECT_GE(run.report.regionsCut, 2);  // the two rings at least
     }
 }

@@ -55,11 +55,20 @@ struct MeshDiagnostics
     bool IsEdgeManifold() const { return nonManifoldEdges == 0; }
     bool IsTwoManifold() const { return nonManifoldEdges == 0 && nonManifoldVertices == 0; }
     bool IsOriented() const { return inconsistentEdges == 0; }
+    bool IsClosed() const { return borderEdges == 0; }
 
     std::string Summary() const
     {
         std::ostringstream s;
         s << faces << " faces, " << vertices << " vertices, " << components << " component(s)";
+        AppendProblems(s);
+        return s.str();
+    }
+
+protected:
+    /// ", 3 border edges, 1 non-manifold edges, ..." for the counts that are not zero.
+    void AppendProblems(std::ostream &s) const
+    {
         if (borderEdges) s << ", " << borderEdges << " border edges";
         if (nonManifoldEdges) s << ", " << nonManifoldEdges << " non-manifold edges";
         if (nonManifoldVertices) s << ", " << nonManifoldVertices << " non-manifold vertices";
@@ -67,7 +76,6 @@ struct MeshDiagnostics
         if (degenerateFaces) s << ", " << degenerateFaces << " degenerate faces";
         if (nonFiniteVertices) s << ", " << nonFiniteVertices << " vertices with NaN/inf coordinates";
         if (unreferencedVertices) s << ", " << unreferencedVertices << " unreferenced vertices (ignored)";
-        return s.str();
     }
 };
 

@@ -23,26 +23,17 @@ namespace vsa {
 
 /// What a mesh is, topologically and geometrically: the answer to "is this output usable?".
 /// Counts are over live faces and the vertices they use (see BuildIndexedMesh).
-struct MeshValidity
+struct MeshValidity : MeshDiagnostics
 {
-    int vertices = 0, faces = 0, edges = 0;
-    int borderEdges = 0;
-    int nonManifoldEdges = 0;     ///< edges shared by more than two faces
-    int nonManifoldVertices = 0;  ///< vertices whose faces form several fans
-    int inconsistentEdges = 0;    ///< manifold edges walked the same way by both faces
-    int degenerateFaces = 0;      ///< repeated vertex, (relatively) zero area or NaN
+    int edges = 0;
     int duplicateFaces = 0;       ///< faces on the same three vertices as an earlier face
     int selfIntersections = 0;    ///< pairs of faces that meet beyond their shared vertices; -1 if not counted
-    int components = 0;           ///< connected through manifold edges
     int eulerCharacteristic = 0;  ///< V - E + F
-    bool manifold = false;        ///< edge- and vertex-manifold
-    bool closed = false;          ///< no border edge
-    bool oriented = false;        ///< every manifold edge walked both ways
 
     /// Manifold, oriented, and free of degenerate, duplicate and self-intersecting faces.
     bool IsValid() const
     {
-        return manifold && oriented && degenerateFaces == 0 && duplicateFaces == 0 && selfIntersections <= 0;
+        return IsTwoManifold() && IsOriented() && degenerateFaces == 0 && duplicateFaces == 0 && selfIntersections <= 0;
     }
 
     std::string Summary() const
@@ -50,13 +41,9 @@ struct MeshValidity
         std::ostringstream s;
         s << faces << " faces, " << vertices << " vertices, " << edges << " edges, " << components
           << " component(s), Euler characteristic " << eulerCharacteristic << "; "
-          << (manifold ? "manifold" : "NOT manifold") << ", " << (oriented ? "oriented" : "NOT oriented") << ", "
-          << (closed ? "closed" : "open");
-        if (borderEdges) s << ", " << borderEdges << " border edges";
-        if (nonManifoldEdges) s << ", " << nonManifoldEdges << " non-manifold edges";
-        if (nonManifoldVertices) s << ", " << nonManifoldVertices << " non-manifold vertices";
-        if (inconsistentEdges) s << ", " << inconsistentEdges << " inconsistently oriented edges";
-        if (degenerateFaces) s << ", " << degenerateFaces << " degenerate faces";
+          << (IsTwoManifold() ? "manifold" : "NOT manifold") << ", " << (IsOriented() ? "oriented" : "NOT oriented")
+          << ", " << (IsClosed() ? "closed" : "open");
+        AppendProblems(s);
         if (duplicateFaces) s << ", " << duplicateFaces << " duplicate faces";
         if (selfIntersections > 0) s << ", " << selfIntersections << " self-intersecting face pairs";
         if (selfIntersections < 0) s << ", self-intersections not checked";
@@ -335,21 +322,11 @@ inline MeshValidity CheckMeshValidity(const IndexedMesh &im, const MeshDiagnosti
                                       bool countSelfIntersections = true)
 {
     MeshValidity v;
-    v.vertices = diag.vertices;
-    v.faces = diag.faces;
+    static_cast<MeshDiagnostics &>(v) = diag;
     v.edges = detail::CountEdges(im, diag);
-    v.borderEdges = diag.borderEdges;
-    v.nonManifoldEdges = diag.nonManifoldEdges;
-    v.nonManifoldVertices = diag.nonManifoldVertices;
-    v.inconsistentEdges = diag.inconsistentEdges;
-    v.degenerateFaces = diag.degenerateFaces;
     v.duplicateFaces = detail::CountDuplicateFaces(im);
     v.selfIntersections = countSelfIntersections ? int(detail::SelfIntersectingPairs(im).size()) : -1;
-    v.components = diag.components;
     v.eulerCharacteristic = v.vertices - v.edges + v.faces;
-    v.manifold = diag.IsTwoManifold();
-    v.closed = diag.borderEdges == 0;
-    v.oriented = diag.IsOriented();
     return v;
 }
 
