@@ -182,6 +182,44 @@ TEST(Meshing, ChordThresholdOnAFlatDisc)
     EXPECT_GT(previous, 3);
 }
 
+// Two coplanar regions, the inner and outer halves of a flat "C": the paper's criterion
+// (sin 0 = 0) never splits the chain between them, whose chord then runs straight across the
+// C's opening. The gap test must split it until the output stays on the surface. Repair
+// rounds are off: they would catch this case's fold for other reasons, not every such case's.
+TEST(Meshing, ChordAcrossAGapIsSplit)
+{
+    TMesh c;
+    vsa_test::MakeFlatC(c, 8, 60, M_PI / 3);
+    const IndexedMesh im = BuildIndexedMesh(c);
+    const Partition halves = vsa_test::PartitionByRule(
+        im, 2, [&](int f) { return vsa_test::FaceCentroid(im, f).Norm() < 1.5 ? 0 : 1; });
+    auto farthestFromInput = [&](const MeshingRun &run) {
+        std::vector<Point3d> samples;  // the output's vertices and face centroids
+        for (const auto &t : run.output.faces) {
+            for (int v : t) samples.push_back(run.output.positions[v]);
+            samples.push_back((run.output.positions[t[0]] + run.output.positions[t[1]] + run.output.positions[t[2]]) / 3);
+        }
+        return vsa_test::MaxDistanceToSurface(samples, im);
+    };
+
+    MeshingParam param;
+    param.repairRounds = 0;
+    param.chordGapThreshold = 0;
+    MeshingRun without;
+    Mesh(c, halves, param, without);
+    ASSERT_TRUE(without.report.ok);
+    EXPECT_GT(farthestFromInput(without), 0.3);
+
+    param.chordGapThreshold = MeshingParam().chordGapThreshold;
+    MeshingRun with;
+    Mesh(c, halves, param, with);
+    ExpectValidWithInputTopology(with);
+    EXPECT_GT(with.report.chordAnchors, without.report.chordAnchors);
+    // Chords of the outer arc still bulge into the band by their sagitta; none crosses a gap.
+    EXPECT_LT(farthestFromInput(with), 0.15);
+    EXPECT_EQ(with.report.validity.selfIntersections, 0);
+}
+
 TEST(Meshing, TorusKeepsItsGenusWhateverTheRegions)
 {
     TMesh torus;

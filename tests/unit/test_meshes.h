@@ -186,6 +186,26 @@ inline void MakeFlatSquare(TMesh &m, int n)
     BuildFromLists(m, coords, tris);
 }
 
+/// A flat "C" in the plane z = 0, facing +z: the band of radii [1, 2] over the angles
+/// [gap/2, 2 pi - gap/2], as `rings` x `sectors` quads split in two.
+inline void MakeFlatC(TMesh &m, int rings, int sectors, double gap)
+{
+    std::vector<vcg::Point3f> coords;
+    std::vector<vcg::Point3i> tris;
+    for (int s = 0; s <= sectors; ++s)
+        for (int k = 0; k <= rings; ++k) {
+            const double phi = gap / 2 + (2 * M_PI - gap) * s / sectors, radius = 1 + double(k) / rings;
+            coords.emplace_back(float(radius * std::cos(phi)), float(radius * std::sin(phi)), 0.f);
+        }
+    auto at = [&](int k, int s) { return s * (rings + 1) + k; };
+    for (int s = 0; s < sectors; ++s)
+        for (int k = 0; k < rings; ++k) {
+            tris.emplace_back(at(k, s), at(k + 1, s), at(k + 1, s + 1));
+            tris.emplace_back(at(k, s), at(k + 1, s + 1), at(k, s + 1));
+        }
+    BuildFromLists(m, coords, tris);
+}
+
 }  // namespace vsa_test
 
 #endif  // VSA_TEST_MESHES_H

@@ -5,11 +5,13 @@
 #define VSA_ANCHORS_H
 
 #include <vsa/boundary_chains.h>
+#include <vsa/surface_grid.h>
 #include <vsa/proxy.h>
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <memory>
 #include <vector>
 
 namespace vcg {
@@ -117,11 +119,45 @@ inline double ChainAngleWeight(const MeshingSurface &s, const std::vector<Proxy>
     return a * b < 0 ? 1.0 : (a ^ b).Norm();
 }
 
+/// The paper's criterion weighs a chain's bend by the angle between its two proxies, as if the
+/// chord ran over the surface like the chain does. Between near-coplanar regions whose chain
+/// swings around a hole or a notch of the input, the chord crosses empty space instead; this
+/// test finds chords that stray farther than `threshold` times their length from the input.
+class ChordGapTest
+{
+public:
+    ChordGapTest(const std::vector<Point3d> &positions, const std::vector<std::array<int, 3>> &faces, double threshold)
+        : positions_(positions), faces_(faces), threshold_(threshold)
+    {
+    }
+
+    /// `chainDeviation`: the farthest distance of the chain's vertices from the chord a-b.
+    bool Strays(const Point3d &a, const Point3d &b, double chainDeviation)
+    {
+        const double allowed = threshold_ * (b - a).Norm();
+        // The chain runs from a to b within chainDeviation of the chord, so every point of the
+        // chord has a chain point, on the surface, at most that far: no query needed.
+        if (!(chainDeviation > allowed)) return false;
+        if (!surface_) surface_ = std::make_unique<SurfaceGrid>(positions_, faces_);  // most meshings never get here
+        constexpr int kSamples = 8;
+        for (int i = 1; i < kSamples; ++i)
+            if (!surface_->HasFaceWithin(a + (b - a) * (double(i) / kSamples), allowed)) return true;
+        return false;
+    }
+
+private:
+    const std::vector<Point3d> &positions_;
+    const std::vector<std::array<int, 3>> &faces_;
+    double threshold_;
+    std::unique_ptr<SurfaceGrid> surface_;
+};
+
 /// Subdivides one chain recursively at its vertex farthest from the chord while
-/// d * weight / |chord| exceeds the threshold (see ChainAngleWeight). A chain from an anchor
-/// back to itself is always split.
+/// d * weight / |chord| exceeds the threshold (see ChainAngleWeight), or while the chord
+/// strays from the surface (`gap`, when given). A chain from an anchor back to itself is
+/// always split.
 inline int SubdivideChain(const MeshingSurface &s, const std::vector<Proxy> &proxies, const ChainRun &chain,
-                          double threshold, std::vector<char> &isAnchor)
+                          double threshold, ChordGapTest *gap, std::vector<char> &isAnchor)
 {
     const std::vector<int> &loop = s.cellLoop[chain.cell];
     const int m = int(loop.size());
@@ -134,9 +170,10 @@ inline int SubdivideChain(const MeshingSurface &s, const std::vector<Proxy> &pro
         if (to - from < 2) continue;
         double distance = 0;
         const int split = FarthestFromChord(s, chain.cell, from, to, &distance);
-        const double chordLength = (s.positions[loop[to % m]] - s.positions[loop[from % m]]).Norm();
+        const Point3d &a = s.positions[loop[from % m]], &b = s.positions[loop[to % m]];
         const bool closedChain = loop[to % m] == loop[from % m];
-        if (!closedChain && !(distance * weight > threshold * chordLength)) continue;
+        if (!closedChain && !(distance * weight > threshold * (b - a).Norm()) && !(gap && gap->Strays(a, b, distance)))
+            continue;
         isAnchor[loop[split % m]] = 1;
         ++added;
         stack.push_back({split, to});
@@ -211,13 +248,14 @@ inline int SplitDuplicateChords(const MeshingSurface &s, std::vector<char> &isAn
 ///     i.e. where three cells meet, or two cells meet on the mesh border.
 ///  2. A loop with no junction (an island's shore, a hole, a region's whole border) gets one
 ///     anchor at its vertex farthest from its centroid.
-///  3. Chord subdivision (the paper's criterion) on every chain, recursively.
+///  3. Chord subdivision (the paper's criterion, and `gap` when given) on every chain,
+///     recursively.
 ///  4. Loops with fewer than three anchors are completed with farthest vertices.
 ///  5. Chains joining the same two anchors are split until chords are unique.
 /// 3-5 repeat until nothing changes. `proxies` must have unit normals. `required` (empty,
 /// or one flag per surface vertex) names vertices that must be anchors whatever the rules.
 inline AnchorSet SelectAnchors(const MeshingSurface &s, const std::vector<Proxy> &proxies, double chordThreshold,
-                               const std::vector<char> &required = {})
+                               const std::vector<char> &required = {}, detail::ChordGapTest *gap = nullptr)
 {
     AnchorSet result;
     const int vertexCount = s.VertexCount();
@@ -262,7 +300,7 @@ inline AnchorSet SelectAnchors(const MeshingSurface &s, const std::vector<Proxy>
 
     for (bool changed = true; changed;) {
         for (const detail::ChainRun &chain : detail::CanonicalChains(s, isAnchor))
-            result.chordSplits += detail::SubdivideChain(s, proxies, chain, chordThreshold, isAnchor);
+            result.chordSplits += detail::SubdivideChain(s, proxies, chain, chordThreshold, gap, isAnchor);
         int added = 0;
         for (int c = 0; c < s.CellCount(); ++c) added += detail::CompleteLoop(s, c, isAnchor);
         result.loopCompletions += added;

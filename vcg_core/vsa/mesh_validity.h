@@ -4,6 +4,7 @@
 #ifndef VSA_MESH_VALIDITY_H
 #define VSA_MESH_VALIDITY_H
 
+#include <vsa/surface_grid.h>
 #include <vsa/indexed_mesh.h>
 
 #include <vcg/space/index/grid_util.h>
@@ -251,14 +252,6 @@ inline std::vector<char> DegenerateFaceMask(const IndexedMesh &im)
         degenerate[f] = t[0] == t[1] || t[1] == t[2] || t[2] == t[0] || !(doubleArea > 2 * tinyArea);
     }
     return degenerate;
-}
-
-/// Closed boxes overlap (vcg's Box3::Collide is strict and misses flat boxes).
-inline bool BoxesTouch(const Box3d &a, const Box3d &b)
-{
-    for (int i = 0; i < 3; ++i)
-        if (a.min[i] > b.max[i] || b.min[i] > a.max[i]) return false;
-    return true;
 }
 
 /// Pairs (f < g) of non-degenerate faces that intersect beyond their shared corners, in a

@@ -35,6 +35,10 @@ struct MeshingParam
     /// anchors); 0 keeps every bend. 0.2 was measured as the knee of anchors against
     /// Hausdorff distance on CGAL's sample meshes.
     double chordThreshold = 0.2;
+    /// A chord whose points stray farther than this times its length from the input surface is
+    /// split too, whatever the angle: between near-coplanar regions the paper's criterion would
+    /// let a chord cut across a hole or a notch of the input. 0 turns the test off.
+    double chordGapThreshold = 0.2;
     /// Move each anchor to the average of its projections on the planes of its regions.
     bool projectAnchors = true;
     /// Cap on that move, as a fraction of the shortest chord at the anchor.
@@ -235,11 +239,12 @@ void KeepInputFaces(const MeshingSurface &s, int c, OutputRegistry &registry, Me
 /// will be written, since a triangle fine in double can be flat in a float mesh.
 template <class CoordType>
 MeshingPass RunMeshingPass(const MeshingSurface &s, const std::vector<Proxy> &proxies, const MeshingParam &param,
-                           const std::vector<char> &requiredAnchors, const std::vector<char> &pinnedAnchors,
-                           const std::vector<char> &inputCells, const MeshingPass *previous = nullptr)
+                           ChordGapTest *gap, const std::vector<char> &requiredAnchors,
+                           const std::vector<char> &pinnedAnchors, const std::vector<char> &inputCells,
+                           const MeshingPass *previous = nullptr)
 {
     MeshingPass pass;
-    pass.anchors = SelectAnchors(s, proxies, param.chordThreshold, requiredAnchors);
+    pass.anchors = SelectAnchors(s, proxies, param.chordThreshold, requiredAnchors, gap);
     const AnchorSet &anchors = pass.anchors;
     pass.polygons = CellPolygons(s, anchors);
     pass.positions = PlaceAnchors(s, anchors, pass.polygons, proxies, param.projectAnchors, param.maxAnchorMove,
@@ -461,9 +466,10 @@ MeshingReport BuildApproximatingMesh(const IndexedMesh &in, const Partition &par
     for (int r : partition.faceRegion)
         if (r < 0 || r >= regionCount)
             return fail("a face has region " + std::to_string(r) + ", outside [0, " + std::to_string(regionCount) + ")");
-    if (!(param.chordThreshold >= 0) || !(param.maxAnchorMove >= 0) || param.repairRounds < 0 ||
-        !(param.maxInputFacesGrowth >= 0))
-        return fail("chordThreshold, maxAnchorMove, repairRounds and maxInputFacesGrowth must be non-negative");
+    if (!(param.chordThreshold >= 0) || !(param.chordGapThreshold >= 0) || !(param.maxAnchorMove >= 0) ||
+        param.repairRounds < 0 || !(param.maxInputFacesGrowth >= 0))
+        return fail("chordThreshold, chordGapThreshold, maxAnchorMove, repairRounds and maxInputFacesGrowth must be "
+                    "non-negative");
 
     if (cb) cb(0, "VSA meshing: cutting regions into discs");
     MeshingSurface s;
@@ -471,6 +477,8 @@ MeshingReport BuildApproximatingMesh(const IndexedMesh &in, const Partition &par
     report.ignoredFaces = s.ignoredFaces;
     report.splitVertices = s.splitVertices;
     const std::vector<Proxy> proxies = detail::UsableProxies(s, partition.proxies);
+    detail::ChordGapTest gapTest(s.positions, s.faces, param.chordGapThreshold);
+    detail::ChordGapTest *gap = param.chordGapThreshold > 0 ? &gapTest : nullptr;
 
     if (cb) cb(20, "VSA meshing: anchors and triangulation");
     // Passes: each one responds to the defects of the previous one (see RespondToDefects);
@@ -478,7 +486,7 @@ MeshingReport BuildApproximatingMesh(const IndexedMesh &in, const Partition &par
     std::vector<char> requiredAnchors(s.VertexCount(), 0), pinnedAnchors(s.VertexCount(), 0);
     std::vector<char> inputCells(s.CellCount(), 0);
     detail::MeshingPass pass =
-        detail::RunMeshingPass<CoordType>(s, proxies, param, requiredAnchors, pinnedAnchors, inputCells);
+        detail::RunMeshingPass<CoordType>(s, proxies, param, gap, requiredAnchors, pinnedAnchors, inputCells);
     detail::PassDefects defects;
     if (param.repairRounds > 0) defects = detail::FindDefects(pass);
     size_t fewest = defects.Count();
@@ -489,7 +497,7 @@ MeshingReport BuildApproximatingMesh(const IndexedMesh &in, const Partition &par
         if (cb) cb(20 + 50 * round / (2 * param.repairRounds + 1), "VSA meshing: repairing folds and self-intersections");
         const detail::MeshingPass &previous = round == 1 ? pass : latest;
         if (detail::RespondToDefects(s, previous, defects, requiredAnchors, pinnedAnchors) == 0) break;
-        latest = detail::RunMeshingPass<CoordType>(s, proxies, param, requiredAnchors, pinnedAnchors, inputCells,
+        latest = detail::RunMeshingPass<CoordType>(s, proxies, param, gap, requiredAnchors, pinnedAnchors, inputCells,
                                                    &previous);
         defects = detail::FindDefects(latest);
         if (defects.Count() < fewest) {
@@ -519,7 +527,7 @@ MeshingReport BuildApproximatingMesh(const IndexedMesh &in, const Partition &par
             if (detail::KeepCellsOfIntersectingFaces(s, latest, defects, intersectingInput, requiredAnchors,
                                                      pinnedAnchors, inputCells) == 0)
                 break;
-            latest = detail::RunMeshingPass<CoordType>(s, proxies, param, requiredAnchors, pinnedAnchors, inputCells,
+            latest = detail::RunMeshingPass<CoordType>(s, proxies, param, gap, requiredAnchors, pinnedAnchors, inputCells,
                                                        &latest);
             if (double(latest.triangles.size()) > faceBudget) break;  // and it only grows
             defects = detail::FindDefects(latest);

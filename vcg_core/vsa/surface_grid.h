@@ -1,0 +1,127 @@
+// Variational Shape Approximation for vcglib — the faces of a triangle mesh in a uniform grid,
+// to ask whether a point lies near the surface.
+// SPDX-License-Identifier: GPL-3.0-or-later
+#ifndef VSA_SURFACE_GRID_H
+#define VSA_SURFACE_GRID_H
+
+#include <vcg/space/box3.h>
+#include <vcg/space/distance3.h>
+#include <vcg/space/index/grid_util.h>
+#include <vcg/space/triangle3.h>
+
+#include <algorithm>
+#include <array>
+#include <cstdlib>
+#include <vector>
+
+namespace vcg {
+namespace tri {
+namespace vsa {
+
+/// Closed boxes overlap (vcg's Box3::Collide is strict and misses flat boxes).
+inline bool BoxesTouch(const Box3d &a, const Box3d &b)
+{
+    for (int i = 0; i < 3; ++i)
+        if (a.min[i] > b.max[i] || b.min[i] > a.max[i]) return false;
+    return true;
+}
+
+/// Faces bucketed by bounding box in a uniform grid of about one cell per face, as flat
+/// arrays (the faces of cell i are cellFaces_[cellOffset_[i] .. cellOffset_[i + 1])).
+class SurfaceGrid
+{
+public:
+    SurfaceGrid(const std::vector<Point3d> &positions, const std::vector<std::array<int, 3>> &faces)
+        : positions_(positions), faces_(faces), faceBox_(faces.size())
+    {
+        for (size_t f = 0; f < faces.size(); ++f) {
+            for (int v : faces[f]) faceBox_[f].Add(positions[v]);
+            box_.Add(faceBox_[f]);
+        }
+        if (box_.IsNull()) return;
+        box_.Offset(box_.Diag() * 1e-9 + 1e-300);  // no zero-thickness box for a flat mesh
+        BestDim<double>(std::max<size_t>(faces.size(), 1), box_.Dim(), dim_);
+        for (int i = 0; i < 3; ++i) {
+            dim_[i] = std::max(dim_[i], 1);
+            cellSize_[i] = box_.Dim()[i] / dim_[i];
+        }
+        cellOffset_.assign(size_t(dim_[0]) * dim_[1] * dim_[2] + 1, 0);
+        ForEachCellOfFaces([&](size_t cell, int) { ++cellOffset_[cell + 1]; });
+        for (size_t i = 1; i < cellOffset_.size(); ++i) cellOffset_[i] += cellOffset_[i - 1];
+        cellFaces_.resize(cellOffset_.back());
+        std::vector<int> filled(cellOffset_.begin(), cellOffset_.end() - 1);
+        ForEachCellOfFaces([&](size_t cell, int f) { cellFaces_[filled[cell]++] = f; });
+    }
+
+    /// Whether some face (as a filled triangle) lies within `radius` of p. Cells are visited
+    /// in shells around p's own, so a point on or near the surface answers after a cell or two.
+    bool HasFaceWithin(const Point3d &p, double radius) const
+    {
+        if (box_.IsNull()) return false;
+        const Box3d query(p, radius);
+        if (!BoxesTouch(query, box_)) return false;
+        const Point3i center = CellOf(p), lo = CellOf(query.min), hi = CellOf(query.max);
+        int shells = 0;
+        for (int i = 0; i < 3; ++i) shells = std::max({shells, center[i] - lo[i], hi[i] - center[i]});
+        for (int s = 0; s <= shells; ++s)
+            for (int z = std::max(lo[2], center[2] - s); z <= std::min(hi[2], center[2] + s); ++z)
+                for (int y = std::max(lo[1], center[1] - s); y <= std::min(hi[1], center[1] + s); ++y) {
+                    // Off the shell's z and y faces, only its two x ends are new.
+                    const bool wholeRow = std::abs(z - center[2]) == s || std::abs(y - center[1]) == s;
+                    for (int x = std::max(lo[0], center[0] - s); x <= std::min(hi[0], center[0] + s); ++x)
+                        if ((wholeRow || std::abs(x - center[0]) == s) &&
+                            CellHasFaceWithin(CellIndex(x, y, z), p, radius, query))
+                            return true;
+                }
+        return false;
+    }
+
+private:
+    Point3i CellOf(const Point3d &p) const
+    {
+        Point3i c;
+        for (int i = 0; i < 3; ++i) c[i] = std::clamp(int((p[i] - box_.min[i]) / cellSize_[i]), 0, dim_[i] - 1);
+        return c;
+    }
+    size_t CellIndex(int x, int y, int z) const { return (size_t(z) * dim_[1] + y) * dim_[0] + x; }
+
+    template <class Visit>
+    void ForEachCellOfFaces(Visit visit) const
+    {
+        for (int f = 0; f < int(faces_.size()); ++f) {
+            const Point3i lo = CellOf(faceBox_[f].min), hi = CellOf(faceBox_[f].max);
+            for (int z = lo[2]; z <= hi[2]; ++z)
+                for (int y = lo[1]; y <= hi[1]; ++y)
+                    for (int x = lo[0]; x <= hi[0]; ++x) visit(CellIndex(x, y, z), f);
+        }
+    }
+
+    bool CellHasFaceWithin(size_t cell, const Point3d &p, double radius, const Box3d &query) const
+    {
+        for (int k = cellOffset_[cell]; k < cellOffset_[cell + 1]; ++k) {
+            const int f = cellFaces_[k];
+            if (!BoxesTouch(faceBox_[f], query)) continue;
+            const std::array<int, 3> &t = faces_[f];
+            const Triangle3<double> triangle(positions_[t[0]], positions_[t[1]], positions_[t[2]]);
+            double distance;
+            Point3d closest;
+            TrianglePointDistance(triangle, p, distance, closest);
+            if (distance <= radius) return true;
+        }
+        return false;
+    }
+
+    const std::vector<Point3d> &positions_;
+    const std::vector<std::array<int, 3>> &faces_;
+    std::vector<Box3d> faceBox_;
+    Box3d box_;
+    Point3i dim_{1, 1, 1};
+    Point3d cellSize_{1, 1, 1};
+    std::vector<int> cellOffset_, cellFaces_;
+};
+
+}  // namespace vsa
+}  // namespace tri
+}  // namespace vcg
+
+#endif  // VSA_SURFACE_GRID_H
