@@ -13,6 +13,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <numeric>
 #include <sstream>
 #include <string>
 #include <utility>
@@ -124,13 +125,13 @@ inline bool SegmentMeetsTriangle2d(const Point2d &p, const Point2d &q, const std
     return false;
 }
 
-/// Closed segment pq meets closed triangle abc (unit normal n); endpoints within `tolerance`
-/// of the plane count as on it, so that a segment touching the plane is tested where it
-/// touches, not by the sign of a rounding error.
-inline bool SegmentMeetsTriangle(const Point3d &p, const Point3d &q, const Point3d &a, const Point3d &b,
-                                 const Point3d &c, const Point3d &n, double tolerance)
+/// Closed segment pq meets closed triangle abc (unit normal n), given the heights of p and q
+/// over its plane, sp = n * (p - a) and sq = n * (q - a); endpoints within `tolerance` of the
+/// plane count as on it, so that a segment touching the plane is tested where it touches,
+/// not by the sign of a rounding error.
+inline bool SegmentMeetsTriangle(const Point3d &p, const Point3d &q, double sp, double sq, const Point3d &a,
+                                 const Point3d &b, const Point3d &c, const Point3d &n, double tolerance)
 {
-    const double sp = n * (p - a), sq = n * (q - a);
     if ((sp > tolerance && sq > tolerance) || (sp < -tolerance && sq < -tolerance)) return false;
     const int axis = DominantAxis(n);
     const std::array<Point2d, 3> t = {DropAxis(a, axis), DropAxis(b, axis), DropAxis(c, axis)};
@@ -160,11 +161,30 @@ inline bool SectorsOverlap2d(Point2d u0, Point2d v0, Point2d u1, Point2d v1)
            strictlyInside(v0, u1, v1) || (sameRay(u0, u1) && sameRay(v0, v1));
 }
 
+/// What FacesIntersect needs of each face, computed once however many pairs it is in.
+struct FaceShape
+{
+    Point3d normal;      ///< unit normal
+    double longestEdge;  ///< length of the longest edge
+};
+
+/// The FaceShape of face f of `im`.
+inline FaceShape ShapeOfFace(const IndexedMesh &im, int f)
+{
+    const auto &t = im.faces[f];
+    const auto &P = im.positions;
+    FaceShape shape;
+    shape.normal = ((P[t[1]] - P[t[0]]) ^ (P[t[2]] - P[t[0]])).Normalize();
+    shape.longestEdge = 0;
+    for (int i = 0; i < 3; ++i) shape.longestEdge = std::max(shape.longestEdge, (P[t[i]] - P[t[(i + 1) % 3]]).Norm());
+    return shape;
+}
+
 /// Whether faces f and g of `im` meet anywhere but at their shared corners. Corners are
 /// shared when they are at the same place, whether or not they are the same vertex: faces of
 /// an unmerged mesh, or of a mesh whose non-manifold vertex was split, that touch only along
-/// their common corners do not intersect.
-inline bool FacesIntersect(const IndexedMesh &im, int f, int g)
+/// their common corners do not intersect. `shape` is ShapeOfFace of every face.
+inline bool FacesIntersect(const IndexedMesh &im, const std::vector<FaceShape> &shape, int f, int g)
 {
     const auto &tf = im.faces[f], &tg = im.faces[g];
     const auto &P = im.positions;
@@ -178,24 +198,28 @@ inline bool FacesIntersect(const IndexedMesh &im, int f, int g)
             }
     if (shared == 3) return false;  // a duplicate face (counted as such if it shares vertices)
     const Point3d a = P[tf[0]], b = P[tf[1]], c = P[tf[2]];
-    const Point3d nf = ((b - a) ^ (c - a)).Normalize();
-    const Point3d ng = ((P[tg[1]] - P[tg[0]]) ^ (P[tg[2]] - P[tg[0]])).Normalize();
-    double longest = 0;
-    for (int i = 0; i < 3; ++i) {
-        longest = std::max(longest, (P[tf[i]] - P[tf[(i + 1) % 3]]).Norm());
-        longest = std::max(longest, (P[tg[i]] - P[tg[(i + 1) % 3]]).Norm());
-    }
+    const Point3d &nf = shape[f].normal, &ng = shape[g].normal;
+    const double longest = std::max(shape[f].longestEdge, shape[g].longestEdge);
     const int axis = DominantAxis(nf);
+    // Heights of g's corners over f's plane and of f's corners over g's plane, each needed
+    // by two of the edge-triangle tests below.
+    double overF[3], overG[3];
+    for (int i = 0; i < 3; ++i) {
+        overF[i] = nf * (P[tg[i]] - a);
+        overG[i] = ng * (P[tf[i]] - P[tg[0]]);
+    }
 
     if (shared == 0) {
         const double onPlane = 1e-12 * longest;
         bool coplanar = true;
-        for (int j = 0; j < 3; ++j) coplanar &= std::abs(nf * (P[tg[j]] - a)) <= onPlane;
+        for (int j = 0; j < 3; ++j) coplanar &= std::abs(overF[j]) <= onPlane;
         if (!coplanar) {
             for (int i = 0; i < 3; ++i) {
-                if (SegmentMeetsTriangle(P[tf[i]], P[tf[(i + 1) % 3]], P[tg[0]], P[tg[1]], P[tg[2]], ng, onPlane))
+                const int k = (i + 1) % 3;
+                if (SegmentMeetsTriangle(P[tf[i]], P[tf[k]], overG[i], overG[k], P[tg[0]], P[tg[1]], P[tg[2]], ng,
+                                         onPlane) ||
+                    SegmentMeetsTriangle(P[tg[i]], P[tg[k]], overF[i], overF[k], a, b, c, nf, onPlane))
                     return true;
-                if (SegmentMeetsTriangle(P[tg[i]], P[tg[(i + 1) % 3]], a, b, c, nf, onPlane)) return true;
             }
             return false;
         }
@@ -224,7 +248,7 @@ inline bool FacesIntersect(const IndexedMesh &im, int f, int g)
     const int i0 = sharedF[0], j0 = sharedG[0];
     const double nearPlane = 1e-6 * longest;
     bool nearlyCoplanar = true;
-    for (int j = 0; j < 3; ++j) nearlyCoplanar &= std::abs(nf * (P[tg[j]] - a)) <= nearPlane;
+    for (int j = 0; j < 3; ++j) nearlyCoplanar &= std::abs(overF[j]) <= nearPlane;
     if (nearlyCoplanar) {
         const Point2d apex = DropAxis(P[tf[i0]], axis);
         return SectorsOverlap2d(DropAxis(P[tf[(i0 + 1) % 3]], axis) - apex,
@@ -233,8 +257,10 @@ inline bool FacesIntersect(const IndexedMesh &im, int f, int g)
                                 DropAxis(P[tg[(j0 + 2) % 3]], axis) - apex);
     }
     const double onPlane = 1e-12 * longest;
-    return SegmentMeetsTriangle(P[tf[(i0 + 1) % 3]], P[tf[(i0 + 2) % 3]], P[tg[0]], P[tg[1]], P[tg[2]], ng, onPlane) ||
-           SegmentMeetsTriangle(P[tg[(j0 + 1) % 3]], P[tg[(j0 + 2) % 3]], a, b, c, nf, onPlane);
+    const int i1 = (i0 + 1) % 3, i2 = (i0 + 2) % 3, j1 = (j0 + 1) % 3, j2 = (j0 + 2) % 3;
+    return SegmentMeetsTriangle(P[tf[i1]], P[tf[i2]], overG[i1], overG[i2], P[tg[0]], P[tg[1]], P[tg[2]], ng,
+                                onPlane) ||
+           SegmentMeetsTriangle(P[tg[j1]], P[tg[j2]], overF[j1], overF[j2], a, b, c, nf, onPlane);
 }
 
 /// Same criterion as BuildIndexedMesh's degenerate count; such faces have no plane to test.
@@ -254,11 +280,13 @@ inline std::vector<char> DegenerateFaceMask(const IndexedMesh &im)
     return degenerate;
 }
 
-/// Pairs (f < g) of non-degenerate faces that intersect beyond their shared corners, in a
-/// deterministic order. Needs only `faces` and `positions`. Faces go in a uniform grid of
-/// about one cell per face; a pair is tested in the one cell holding the minimum corner of
-/// the overlap of their boxes, so each pair is tested at most once.
-inline std::vector<std::pair<int, int>> SelfIntersectingPairs(const IndexedMesh &im)
+/// Pairs (f < g) of non-degenerate faces that intersect beyond their shared corners, sorted;
+/// only pairs with a face flagged in `fresh` when it is not empty (the pairs of the other
+/// faces are known). Needs only `faces` and `positions`. Faces go in a uniform grid of about
+/// one cell per face; a pair is tested in the one cell holding the minimum corner of the
+/// overlap of their boxes, so each pair is tested at most once.
+inline std::vector<std::pair<int, int>> SelfIntersectingPairs(const IndexedMesh &im,
+                                                              const std::vector<char> &fresh = {})
 {
     const int faceCount = im.FaceCount();
     const std::vector<char> degenerate = DegenerateFaceMask(im);
@@ -282,29 +310,42 @@ inline std::vector<std::pair<int, int>> SelfIntersectingPairs(const IndexedMesh 
         return c;
     };
     std::vector<Point3i> lo(faceCount), hi(faceCount);
-    std::vector<std::vector<int>> cells(size_t(dim[0]) * dim[1] * dim[2]);
+    std::vector<FaceShape> shape(faceCount);
     auto cellIndex = [&](int x, int y, int z) { return (size_t(z) * dim[1] + y) * dim[0] + x; };
-    for (int f = 0; f < faceCount; ++f) {
-        if (degenerate[f]) continue;
-        lo[f] = cellOf(faceBox[f].min);
-        hi[f] = cellOf(faceBox[f].max);
+    auto forCellsOf = [&](int f, auto &&visit) {
         for (int z = lo[f][2]; z <= hi[f][2]; ++z)
             for (int y = lo[f][1]; y <= hi[f][1]; ++y)
-                for (int x = lo[f][0]; x <= hi[f][0]; ++x) cells[cellIndex(x, y, z)].push_back(f);
+                for (int x = lo[f][0]; x <= hi[f][0]; ++x) visit(cellIndex(x, y, z));
+    };
+    // Faces of grid cell k: cellFaces[cellOffset[k] .. k+1), in increasing order.
+    std::vector<int> cellOffset(size_t(dim[0]) * dim[1] * dim[2] + 1, 0), cellFaces;
+    for (int f = 0; f < faceCount; ++f) {
+        if (degenerate[f]) continue;
+        shape[f] = ShapeOfFace(im, f);
+        lo[f] = cellOf(faceBox[f].min);
+        hi[f] = cellOf(faceBox[f].max);
+        forCellsOf(f, [&](size_t k) { ++cellOffset[k + 1]; });
     }
+    std::partial_sum(cellOffset.begin(), cellOffset.end(), cellOffset.begin());
+    cellFaces.resize(cellOffset.back());
+    std::vector<int> fill(cellOffset.begin(), cellOffset.end() - 1);
+    for (int f = 0; f < faceCount; ++f)
+        if (!degenerate[f]) forCellsOf(f, [&](size_t k) { cellFaces[fill[k]++] = f; });
     for (int z = 0; z < dim[2]; ++z)
         for (int y = 0; y < dim[1]; ++y)
             for (int x = 0; x < dim[0]; ++x) {
-                const std::vector<int> &cell = cells[cellIndex(x, y, z)];
-                for (size_t i = 0; i < cell.size(); ++i)
-                    for (size_t j = i + 1; j < cell.size(); ++j) {
-                        const int f = cell[i], g = cell[j];
+                const size_t k = cellIndex(x, y, z);
+                for (int i = cellOffset[k]; i < cellOffset[k + 1]; ++i)
+                    for (int j = i + 1; j < cellOffset[k + 1]; ++j) {
+                        const int f = cellFaces[i], g = cellFaces[j];
+                        if (!fresh.empty() && !fresh[f] && !fresh[g]) continue;
                         const Point3i first(std::max(lo[f][0], lo[g][0]), std::max(lo[f][1], lo[g][1]),
                                             std::max(lo[f][2], lo[g][2]));
                         if (first != Point3i(x, y, z) || !BoxesTouch(faceBox[f], faceBox[g])) continue;
-                        if (FacesIntersect(im, f, g)) pairs.emplace_back(std::min(f, g), std::max(f, g));
+                        if (FacesIntersect(im, shape, f, g)) pairs.emplace_back(std::min(f, g), std::max(f, g));
                     }
             }
+    std::sort(pairs.begin(), pairs.end());
     return pairs;
 }
 

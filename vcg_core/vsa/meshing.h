@@ -155,6 +155,7 @@ struct MeshingPass
 {
     AnchorSet anchors;
     std::vector<std::vector<int>> polygons;       ///< per cell, anchor indices
+    std::vector<std::vector<int>> polygonAt;      ///< per cell, the loop position of each polygon vertex
     std::vector<Point3d> positions;               ///< anchors, then extra vertices
     std::vector<int> vertexSource;                ///< surface vertex of each output vertex, or -1
     std::vector<std::array<int, 3>> triangles;
@@ -241,12 +242,15 @@ template <class CoordType>
 MeshingPass RunMeshingPass(const MeshingSurface &s, const std::vector<Proxy> &proxies, const MeshingParam &param,
                            ChordGapTest *gap, const std::vector<char> &requiredAnchors,
                            const std::vector<char> &pinnedAnchors, const std::vector<char> &inputCells,
+                           CellFlooding &flooding,
                            const MeshingPass *previous = nullptr)
 {
     MeshingPass pass;
     pass.anchors = SelectAnchors(s, proxies, param.chordThreshold, requiredAnchors, gap);
     const AnchorSet &anchors = pass.anchors;
     pass.polygons = CellPolygons(s, anchors);
+    pass.polygonAt.resize(s.CellCount());
+    for (int c = 0; c < s.CellCount(); ++c) pass.polygonAt[c] = AnchorPositionsInLoop(s, c, anchors);
     pass.positions = PlaceAnchors(s, anchors, pass.polygons, proxies, param.projectAnchors, param.maxAnchorMove,
                                   pinnedAnchors);
     for (int v : anchors.vertexOfAnchor) pass.pinnedAnchors += pinnedAnchors[v];
@@ -269,7 +273,6 @@ MeshingPass RunMeshingPass(const MeshingSurface &s, const std::vector<Proxy> &pr
     // Then the cells kept as input faces: the others must triangulate around their edges too.
     for (int c = 0; c < s.CellCount(); ++c)
         if (inputCells[c]) KeepInputFaces<CoordType>(s, c, registry, pass);
-    CellFlooding flooding(s);
     for (int c = 0; c < s.CellCount(); ++c) {
         if (inputCells[c]) continue;
         std::vector<std::array<int, 3>> triangles = ReusableTriangles(previous, pass, c, registry);
@@ -312,13 +315,70 @@ struct PassDefects
     size_t Count() const { return intersections.size() + crossings.size(); }
 };
 
-inline PassDefects FindDefects(const MeshingPass &pass)
+/// The output of a pass, as far as self-intersections are concerned.
+inline IndexedMesh OutputOf(const MeshingPass &pass)
 {
-    PassDefects defects;
     IndexedMesh output;
     output.positions = pass.positions;
     output.faces = pass.triangles;
-    defects.intersections = SelfIntersectingPairs(output);
+    return output;
+}
+
+/// Per face of `output` (of pass), the face of `previousOutput` (of previous) it repeats: same
+/// cell, same place in the cell's range, same corner positions in the same order, and as
+/// degenerate or not; else -1. FacesIntersect sees nothing else of a face, so a pair of
+/// repeated faces intersects in both passes or in neither; all -1 unless repeated faces keep
+/// their order, which keeps the pair's roles (f < g) in that test.
+inline std::vector<int> RepeatedFaces(const MeshingPass &pass, const IndexedMesh &output,
+                                      const MeshingPass &previous, const IndexedMesh &previousOutput)
+{
+    std::vector<int> repeats(pass.triangles.size(), -1);
+    const std::vector<char> degenerate = DegenerateFaceMask(output);
+    const std::vector<char> wasDegenerate = DegenerateFaceMask(previousOutput);
+    auto same = [&](int f, int g) {
+        for (int i = 0; i < 3; ++i)
+            if (pass.positions[pass.triangles[f][i]] != previous.positions[previous.triangles[g][i]]) return false;
+        return degenerate[f] == wasDegenerate[g];
+    };
+    for (size_t c = 0; c < pass.cellTriangles.size(); ++c) {
+        const auto [first, last] = pass.cellTriangles[c];
+        const int previousFirst = previous.cellTriangles[c].first;
+        if (last - first != previous.cellTriangles[c].second - previousFirst) continue;
+        bool repeated = true;
+        for (int t = first; t < last && repeated; ++t) repeated = same(t, previousFirst + t - first);
+        for (int t = first; t < last && repeated; ++t) repeats[t] = previousFirst + t - first;
+    }
+    int lastRepeated = -1;
+    for (int g : repeats) {
+        if (g < 0) continue;
+        if (g < lastRepeated) return std::vector<int>(pass.triangles.size(), -1);
+        lastRepeated = g;
+    }
+    return repeats;
+}
+
+/// The defects of `pass`; given the pass it was derived from and its defects, only the pairs
+/// with a face that is not a repeat of that pass are tested (see RepeatedFaces).
+inline PassDefects FindDefects(const MeshingPass &pass, const MeshingPass *previous = nullptr,
+                               const PassDefects *previousDefects = nullptr)
+{
+    PassDefects defects;
+    const IndexedMesh output = OutputOf(pass);
+    if (previous) {
+        const std::vector<int> repeats = RepeatedFaces(pass, output, *previous, OutputOf(*previous));
+        std::vector<char> fresh(repeats.size());
+        std::vector<int> repeatOf(previous->triangles.size(), -1);
+        for (size_t f = 0; f < repeats.size(); ++f) {
+            fresh[f] = repeats[f] < 0;
+            if (repeats[f] >= 0) repeatOf[repeats[f]] = int(f);
+        }
+        defects.intersections = SelfIntersectingPairs(output, fresh);
+        for (const auto &[f, g] : previousDefects->intersections)
+            if (repeatOf[f] >= 0 && repeatOf[g] >= 0) defects.intersections.emplace_back(repeatOf[f], repeatOf[g]);
+        std::sort(defects.intersections.begin(), defects.intersections.end());
+    } else {
+        defects.intersections = SelfIntersectingPairs(output);
+    }
     for (int c = 0; c < int(pass.polygons.size()); ++c)
         if (pass.cellMethod[c] != CellMethod::InputFaces)  // its own faces: nothing folds
             for (const auto &[i, j] : CrossingPolygonEdges(pass.polygons[c], pass.positions, pass.cellNormal[c]))
@@ -331,7 +391,7 @@ inline PassDefects FindDefects(const MeshingPass &pass)
 /// chain is a single edge.
 inline std::pair<int, double> ChainSplit(const MeshingSurface &s, const MeshingPass &pass, int c, int k)
 {
-    const std::vector<int> at = AnchorPositionsInLoop(s, c, pass.anchors);
+    const std::vector<int> &at = pass.polygonAt[c];
     const std::vector<int> &loop = s.cellLoop[c];
     const int n = int(at.size()), m = int(loop.size());
     const int from = at[k], to = k + 1 < n ? at[k + 1] : at[0] + m;
@@ -435,6 +495,21 @@ inline int KeepCellsOfIntersectingFaces(const MeshingSurface &s, const MeshingPa
     return marked;
 }
 
+/// Whether `written`, indexed from the output mesh, is the output of `pass`: the same faces on
+/// corners at the same positions, every vertex used. Only the vertex numbering may differ
+/// then, which SelfIntersectingPairs does not see: the pass's intersections are the output's.
+inline bool WritesPass(const IndexedMesh &written, const MeshingPass &pass)
+{
+    if (written.positions.size() != pass.positions.size() || written.faces.size() != pass.triangles.size())
+        return false;
+    for (size_t v = 0; v < written.positions.size(); ++v)
+        if (written.positions[v] != pass.positions[written.sourceVertex[v]]) return false;
+    for (size_t f = 0; f < written.faces.size(); ++f)
+        for (int i = 0; i < 3; ++i)
+            if (written.sourceVertex[written.faces[f][i]] != size_t(pass.triangles[f][i])) return false;
+    return true;
+}
+
 }  // namespace detail
 
 /// Builds the approximating mesh of a partitioned mesh into `out` (cleared first).
@@ -485,32 +560,34 @@ MeshingReport BuildApproximatingMesh(const IndexedMesh &in, const Partition &par
     // the pass with the fewest defects (the earliest on ties) is the output.
     std::vector<char> requiredAnchors(s.VertexCount(), 0), pinnedAnchors(s.VertexCount(), 0);
     std::vector<char> inputCells(s.CellCount(), 0);
+    CellFlooding flooding(s);
     detail::MeshingPass pass =
-        detail::RunMeshingPass<CoordType>(s, proxies, param, gap, requiredAnchors, pinnedAnchors, inputCells);
+        detail::RunMeshingPass<CoordType>(s, proxies, param, gap, requiredAnchors, pinnedAnchors, inputCells, flooding);
     detail::PassDefects defects;
     if (param.repairRounds > 0) defects = detail::FindDefects(pass);
     size_t fewest = defects.Count();
-    detail::PassDefects fewestDefects = defects;
+    detail::PassDefects passDefects = defects;  // always those of `pass`
     detail::MeshingPass latest;
     int round = 1;
     for (; round <= param.repairRounds && defects.Count() > 0; ++round) {
         if (cb) cb(20 + 50 * round / (2 * param.repairRounds + 1), "VSA meshing: repairing folds and self-intersections");
         const detail::MeshingPass &previous = round == 1 ? pass : latest;
         if (detail::RespondToDefects(s, previous, defects, requiredAnchors, pinnedAnchors) == 0) break;
-        latest = detail::RunMeshingPass<CoordType>(s, proxies, param, gap, requiredAnchors, pinnedAnchors, inputCells,
-                                                   &previous);
-        defects = detail::FindDefects(latest);
+        detail::MeshingPass next = detail::RunMeshingPass<CoordType>(s, proxies, param, gap, requiredAnchors,
+                                                                     pinnedAnchors, inputCells, flooding, &previous);
+        defects = detail::FindDefects(next, &previous, &defects);
+        latest = std::move(next);
         if (defects.Count() < fewest) {
             fewest = defects.Count();
-            fewestDefects = defects;
+            passDefects = defects;
             pass = latest;
             report.repairRounds = round;
         }
     }
     // Last resort, from the best pass: cells of intersecting faces keep their input faces, until
     // none is left; except cells where the input itself intersects, which that cannot help.
-    if (!fewestDefects.intersections.empty() && param.maxInputFacesGrowth > 0 &&
-        detail::FacesKeepingInput(s, pass, fewestDefects) <= param.maxInputFacesGrowth * double(pass.triangles.size())) {
+    if (!passDefects.intersections.empty() && param.maxInputFacesGrowth > 0 &&
+        detail::FacesKeepingInput(s, pass, passDefects) <= param.maxInputFacesGrowth * double(pass.triangles.size())) {
         std::vector<char> intersectingInput(s.CellCount(), 0);
         std::vector<int> cellOfInputFace(in.FaceCount(), -1);
         for (int f = 0; f < s.FaceCount(); ++f) cellOfInputFace[s.sourceFace[f]] = s.faceCell[f];
@@ -518,21 +595,23 @@ MeshingReport BuildApproximatingMesh(const IndexedMesh &in, const Partition &par
             for (int c : {cellOfInputFace[f], cellOfInputFace[g]})
                 if (c >= 0) intersectingInput[c] = 1;
         // It costs faces: taken only when it leaves fewer intersecting pairs within the budget.
-        size_t fewestIntersections = fewestDefects.intersections.size();
+        size_t fewestIntersections = passDefects.intersections.size();
         const double faceBudget = param.maxInputFacesGrowth * double(pass.triangles.size());
-        defects = fewestDefects;
+        defects = passDefects;
         latest = pass;
         for (int last = round + param.repairRounds; round < last && !defects.intersections.empty(); ++round) {
             if (cb) cb(20 + 50 * round / (2 * param.repairRounds + 1), "VSA meshing: keeping input faces against self-intersections");
             if (detail::KeepCellsOfIntersectingFaces(s, latest, defects, intersectingInput, requiredAnchors,
                                                      pinnedAnchors, inputCells) == 0)
                 break;
-            latest = detail::RunMeshingPass<CoordType>(s, proxies, param, gap, requiredAnchors, pinnedAnchors, inputCells,
-                                                       &latest);
-            if (double(latest.triangles.size()) > faceBudget) break;  // and it only grows
-            defects = detail::FindDefects(latest);
+            detail::MeshingPass next = detail::RunMeshingPass<CoordType>(s, proxies, param, gap, requiredAnchors,
+                                                                         pinnedAnchors, inputCells, flooding, &latest);
+            if (double(next.triangles.size()) > faceBudget) break;  // and it only grows
+            defects = detail::FindDefects(next, &latest, &defects);
+            latest = std::move(next);
             if (defects.intersections.size() < fewestIntersections) {
                 fewestIntersections = defects.intersections.size();
+                passDefects = defects;
                 pass = latest;
                 report.repairRounds = round;
             }
@@ -592,7 +671,11 @@ MeshingReport BuildApproximatingMesh(const IndexedMesh &in, const Partition &par
     for (int c : pass.triangleCell) report.faceRegion.push_back(s.cellRegion[c]);
     for (int v : pass.vertexSource) report.vertexSource.push_back(v < 0 ? -1 : s.sourceVertex[v]);
     if (cb) cb(90, "VSA meshing: checking the output");
-    report.validity = CheckMeshValidity(out, param.checkSelfIntersections);
+    MeshDiagnostics diagnostics;
+    const IndexedMesh written = BuildIndexedMesh(out, &diagnostics);
+    const bool counted = param.repairRounds > 0 && detail::WritesPass(written, pass);
+    report.validity = CheckMeshValidity(written, diagnostics, param.checkSelfIntersections && !counted);
+    if (param.checkSelfIntersections && counted) report.validity.selfIntersections = int(passDefects.intersections.size());
     report.ok = true;
     if (cb) cb(100, "VSA meshing: done");
     return report;

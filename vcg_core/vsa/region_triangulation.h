@@ -14,7 +14,7 @@
 #include <cstdint>
 #include <functional>
 #include <limits>
-#include <queue>
+#include <numeric>
 #include <set>
 #include <unordered_set>
 #include <utility>
@@ -81,9 +81,36 @@ struct CellTriangulation
 class CellFlooding
 {
 public:
+    /// Built once for all passes: the edges around every vertex with their lengths, and the
+    /// cell each vertex is inside of, so that each pass's Dijkstra neither walks faces nor
+    /// measures an edge twice.
     explicit CellFlooding(const MeshingSurface &s)
         : s_(s), color_(s.positions.size(), -1), distance_(s.positions.size(), 0), onLoop_(s.positions.size(), 0)
     {
+        const int vertexCount = s.VertexCount();
+        // Each edge once: from the higher of its two faces, or from its only one.
+        std::vector<std::array<int, 2>> edges;
+        for (int f = 0; f < s.FaceCount(); ++f)
+            for (int i = 0; i < 3; ++i)
+                if (s.neighbors[f][i] < f) edges.push_back({s.faces[f][i], s.faces[f][(i + 1) % 3]});
+        edgeOffset_.assign(size_t(vertexCount) + 1, 0);
+        for (const auto &[u, w] : edges) ++edgeOffset_[u + 1], ++edgeOffset_[w + 1];
+        std::partial_sum(edgeOffset_.begin(), edgeOffset_.end(), edgeOffset_.begin());
+        std::vector<int> fill(edgeOffset_.begin(), edgeOffset_.end() - 1);
+        edgeTo_.resize(2 * edges.size());
+        edgeLength_.resize(2 * edges.size());
+        for (const auto &[u, w] : edges) {
+            const double length = (s.positions[w] - s.positions[u]).Norm();
+            edgeTo_[fill[u]] = w, edgeLength_[fill[u]++] = length;
+            edgeTo_[fill[w]] = u, edgeLength_[fill[w]++] = length;
+        }
+        // A vertex off its cell's loop has all its faces in that cell: the cell is a disc.
+        interiorOf_.assign(vertexCount, -1);
+        for (int v = 0; v < vertexCount; ++v)
+            for (int k = s.vertexFaceOffset[v]; k < s.vertexFaceOffset[v + 1]; ++k)
+                interiorOf_[v] = s.faceCell[s.vertexFaces[k]];
+        for (const std::vector<int> &loop : s.cellLoop)
+            for (int v : loop) interiorOf_[v] = -1;
     }
 
     /// Sorted anchor triples of the three-coloured faces of cell c.
@@ -123,7 +150,14 @@ public:
     }
 
 private:
+    using QueueItem = std::pair<double, int>;  ///< distance, vertex
+
     const MeshingSurface &s_;
+    std::vector<int> edgeOffset_;     ///< edges from vertex u: edgeTo_[edgeOffset_[u] .. u+1)
+    std::vector<int> edgeTo_;         ///< the other end of each edge
+    std::vector<double> edgeLength_;
+    std::vector<int> interiorOf_;     ///< per vertex: the cell it is inside of, -1 on a loop
+    std::vector<QueueItem> queue_;  ///< a min-heap, kept to reuse its storage
     std::vector<int> color_;
     std::vector<double> distance_;
     std::vector<char> onLoop_;
@@ -163,25 +197,28 @@ private:
         }
     }
 
+    // Pops go by (distance, vertex), so the colours do not depend on the order edges are tried.
     void FloodInterior(int c)
     {
-        using Item = std::pair<double, int>;
-        std::priority_queue<Item, std::vector<Item>, std::greater<Item>> queue;
-        for (int v : s_.cellLoop[c]) queue.push({distance_[v], v});
-        while (!queue.empty()) {
-            const auto [d, u] = queue.top();
-            queue.pop();
+        const std::greater<QueueItem> later;
+        queue_.clear();
+        for (int v : s_.cellLoop[c]) {
+            queue_.push_back({distance_[v], v});
+            std::push_heap(queue_.begin(), queue_.end(), later);
+        }
+        while (!queue_.empty()) {
+            std::pop_heap(queue_.begin(), queue_.end(), later);
+            const auto [d, u] = queue_.back();
+            queue_.pop_back();
             if (d > distance_[u]) continue;  // stale entry
-            for (int k = s_.vertexFaceOffset[u]; k < s_.vertexFaceOffset[u + 1]; ++k) {
-                const int f = s_.vertexFaces[k];
-                if (s_.faceCell[f] != c) continue;
-                for (int w : s_.faces[f]) {
-                    if (w == u || onLoop_[w]) continue;
-                    const double nd = d + (s_.positions[w] - s_.positions[u]).Norm();
-                    if (color_[w] >= 0 && !(nd < distance_[w])) continue;
-                    Set(w, color_[u], nd);
-                    queue.push({nd, w});
-                }
+            for (int k = edgeOffset_[u]; k < edgeOffset_[u + 1]; ++k) {
+                const int w = edgeTo_[k];
+                if (interiorOf_[w] != c) continue;
+                const double nd = d + edgeLength_[k];
+                if (color_[w] >= 0 && !(nd < distance_[w])) continue;
+                Set(w, color_[u], nd);
+                queue_.push_back({nd, w});
+                std::push_heap(queue_.begin(), queue_.end(), later);
             }
         }
     }
