@@ -574,3 +574,18 @@ TEST(Meshing, WritesIntoABareMeshTypeAndIsDeterministic)
         }
     EXPECT_EQ(a.faceRegion, b.faceRegion);
 }
+
+// Triangles are judged on the coordinates the output will store; a loop of plain double ->
+// float -> double round trips is compiled away by GCC 12.2 at -O2/-O3 for some of them.
+TEST(Meshing, PositionsAreRoundedAsTheOutputStoresThem)
+{
+    std::vector<Point3d> points;
+    for (int i = 0; i < 101; ++i) points.emplace_back(0.1 * i + 1e-9, 1.0 / 3 + i, 2.0 / 7 - i);
+    std::vector<vcg::Point3f> stored;
+    for (const Point3d &p : points) stored.push_back(vcg::Point3f::Construct(p));
+    for (Point3d &p : points) p = detail::AsWritten<vcg::Point3f>(p);
+    for (size_t i = 0; i < points.size(); ++i)
+        for (int k = 0; k < 3; ++k) EXPECT_EQ(points[i][k], double(stored[i][k])) << "point " << i << " axis " << k;
+    const Point3d exact(1.0 / 3, 0.1, 1e300);
+    EXPECT_EQ(detail::AsWritten<vcg::Point3d>(exact), exact);
+}

@@ -202,6 +202,20 @@ inline std::vector<std::array<int, 3>> ReusableTriangles(const MeshingPass *prev
     return triangles;
 }
 
+/// p as the output mesh will store it. The rounding goes through a volatile scalar: GCC 12.2
+/// at -O2 and -O3 drops a plain double -> float -> double round trip in loops, leaving some
+/// coordinates unrounded.
+template <class CoordType>
+Point3d AsWritten(const Point3d &p)
+{
+    Point3d rounded;
+    for (int i = 0; i < 3; ++i) {
+        const volatile typename CoordType::ScalarType scalar = typename CoordType::ScalarType(p[i]);
+        rounded[i] = double(scalar);
+    }
+    return rounded;
+}
+
 /// Cell c as its own input faces, the last resort against self-intersections: every vertex of
 /// its loop must be a pinned anchor (so its neighbours meet it on the input's boundary); its
 /// interior vertices become extra vertices at their input positions. For an input that does
@@ -215,7 +229,7 @@ void KeepInputFaces(const MeshingSurface &s, int c, OutputRegistry &registry, Me
         if (anchor >= 0) return anchor;
         const auto [it, added] = extraOf.emplace(v, int(pass.positions.size()));
         if (added) {
-            pass.positions.push_back(Point3d::Construct(CoordType::Construct(s.positions[v])));
+            pass.positions.push_back(AsWritten<CoordType>(s.positions[v]));
             pass.vertexSource.push_back(v);
         }
         return it->second;
@@ -254,7 +268,7 @@ MeshingPass RunMeshingPass(const MeshingSurface &s, const std::vector<Proxy> &pr
     pass.positions = PlaceAnchors(s, anchors, pass.polygons, proxies, param.projectAnchors, param.maxAnchorMove,
                                   pinnedAnchors);
     for (int v : anchors.vertexOfAnchor) pass.pinnedAnchors += pinnedAnchors[v];
-    for (Point3d &p : pass.positions) p = Point3d::Construct(CoordType::Construct(p));
+    for (Point3d &p : pass.positions) p = AsWritten<CoordType>(p);
     pass.vertexSource = anchors.vertexOfAnchor;
 
     // Chords first: every cell then triangulates around edges it must not duplicate.
@@ -284,7 +298,7 @@ MeshingPass RunMeshingPass(const MeshingSurface &s, const std::vector<Proxy> &pr
             CellTriangulation cell = TriangulateCell(s, c, pass.polygons[c], pass.positions, proxies[s.cellRegion[c]],
                                                      anchors, flooding, registry, int(pass.positions.size()));
             if (cell.steinerVertex >= 0) {
-                pass.positions.push_back(Point3d::Construct(CoordType::Construct(cell.steinerPosition)));
+                pass.positions.push_back(AsWritten<CoordType>(cell.steinerPosition));
                 pass.vertexSource.push_back(cell.steinerSourceVertex);
             }
             triangles = std::move(cell.triangles);
