@@ -7,13 +7,10 @@
 #include <vsa/surface_grid.h>
 #include <vsa/indexed_mesh.h>
 
-#include <vcg/space/index/grid_util.h>
-
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
-#include <numeric>
 #include <sstream>
 #include <string>
 #include <utility>
@@ -282,66 +279,35 @@ inline std::vector<char> DegenerateFaceMask(const IndexedMesh &im)
 
 /// Pairs (f < g) of non-degenerate faces that intersect beyond their shared corners, sorted;
 /// only pairs with a face flagged in `fresh` when it is not empty (the pairs of the other
-/// faces are known). Needs only `faces` and `positions`. Faces go in a uniform grid of about
-/// one cell per face; a pair is tested in the one cell holding the minimum corner of the
-/// overlap of their boxes, so each pair is tested at most once.
+/// faces are known). Needs only `faces` and `positions`. Faces go in a SurfaceGrid; a pair is
+/// tested in the one grid cell holding the minimum corner of the overlap of their boxes, so
+/// each pair is tested at most once.
 inline std::vector<std::pair<int, int>> SelfIntersectingPairs(const IndexedMesh &im,
                                                               const std::vector<char> &fresh = {})
 {
     const int faceCount = im.FaceCount();
     const std::vector<char> degenerate = DegenerateFaceMask(im);
-    Box3d box;
-    std::vector<Box3d> faceBox(faceCount);
-    for (int f = 0; f < faceCount; ++f) {
-        if (degenerate[f]) continue;
-        for (int v : im.faces[f]) faceBox[f].Add(im.positions[v]);
-        box.Add(faceBox[f]);
-    }
-    std::vector<std::pair<int, int>> pairs;
-    if (box.IsNull()) return pairs;
-    box.Offset(box.Diag() * 1e-9 + 1e-300);  // no zero-thickness box for a flat mesh
-    Point3i dim;
-    BestDim<double>(std::max(faceCount, 1), box.Dim(), dim);
-    for (int i = 0; i < 3; ++i) dim[i] = std::max(dim[i], 1);
-    const Point3d cellSize(box.DimX() / dim[0], box.DimY() / dim[1], box.DimZ() / dim[2]);
-    auto cellOf = [&](const Point3d &p) {
-        Point3i c;
-        for (int i = 0; i < 3; ++i) c[i] = std::clamp(int((p[i] - box.min[i]) / cellSize[i]), 0, dim[i] - 1);
-        return c;
-    };
-    std::vector<Point3i> lo(faceCount), hi(faceCount);
+    const SurfaceGrid grid(im.positions, im.faces, degenerate);
+    std::vector<Point3i> lo(faceCount);
     std::vector<FaceShape> shape(faceCount);
-    auto cellIndex = [&](int x, int y, int z) { return (size_t(z) * dim[1] + y) * dim[0] + x; };
-    auto forCellsOf = [&](int f, auto &&visit) {
-        for (int z = lo[f][2]; z <= hi[f][2]; ++z)
-            for (int y = lo[f][1]; y <= hi[f][1]; ++y)
-                for (int x = lo[f][0]; x <= hi[f][0]; ++x) visit(cellIndex(x, y, z));
-    };
-    // Faces of grid cell k: cellFaces[cellOffset[k] .. k+1), in increasing order.
-    std::vector<int> cellOffset(size_t(dim[0]) * dim[1] * dim[2] + 1, 0), cellFaces;
-    for (int f = 0; f < faceCount; ++f) {
-        if (degenerate[f]) continue;
-        shape[f] = ShapeOfFace(im, f);
-        lo[f] = cellOf(faceBox[f].min);
-        hi[f] = cellOf(faceBox[f].max);
-        forCellsOf(f, [&](size_t k) { ++cellOffset[k + 1]; });
-    }
-    std::partial_sum(cellOffset.begin(), cellOffset.end(), cellOffset.begin());
-    cellFaces.resize(cellOffset.back());
-    std::vector<int> fill(cellOffset.begin(), cellOffset.end() - 1);
     for (int f = 0; f < faceCount; ++f)
-        if (!degenerate[f]) forCellsOf(f, [&](size_t k) { cellFaces[fill[k]++] = f; });
+        if (!degenerate[f]) {
+            lo[f] = grid.CellOf(grid.FaceBox(f).min);
+            shape[f] = ShapeOfFace(im, f);
+        }
+    std::vector<std::pair<int, int>> pairs;
+    const Point3i dim = grid.Dim();
     for (int z = 0; z < dim[2]; ++z)
         for (int y = 0; y < dim[1]; ++y)
             for (int x = 0; x < dim[0]; ++x) {
-                const size_t k = cellIndex(x, y, z);
-                for (int i = cellOffset[k]; i < cellOffset[k + 1]; ++i)
-                    for (int j = i + 1; j < cellOffset[k + 1]; ++j) {
-                        const int f = cellFaces[i], g = cellFaces[j];
+                const auto [first, last] = grid.FacesIn(grid.CellIndex(x, y, z));
+                for (const int *i = first; i != last; ++i)
+                    for (const int *j = i + 1; j != last; ++j) {
+                        const int f = *i, g = *j;
                         if (!fresh.empty() && !fresh[f] && !fresh[g]) continue;
-                        const Point3i first(std::max(lo[f][0], lo[g][0]), std::max(lo[f][1], lo[g][1]),
-                                            std::max(lo[f][2], lo[g][2]));
-                        if (first != Point3i(x, y, z) || !BoxesTouch(faceBox[f], faceBox[g])) continue;
+                        const Point3i firstShared(std::max(lo[f][0], lo[g][0]), std::max(lo[f][1], lo[g][1]),
+                                                  std::max(lo[f][2], lo[g][2]));
+                        if (firstShared != Point3i(x, y, z) || !BoxesTouch(grid.FaceBox(f), grid.FaceBox(g))) continue;
                         if (FacesIntersect(im, shape, f, g)) pairs.emplace_back(std::min(f, g), std::max(f, g));
                     }
             }

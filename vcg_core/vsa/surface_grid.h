@@ -1,5 +1,5 @@
 // Variational Shape Approximation for vcglib — the faces of a triangle mesh in a uniform grid,
-// to ask whether a point lies near the surface.
+// to ask whether a point lies near the surface, or to enumerate nearby face pairs.
 // SPDX-License-Identifier: GPL-3.0-or-later
 #ifndef VSA_SURFACE_GRID_H
 #define VSA_SURFACE_GRID_H
@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <array>
 #include <cstdlib>
+#include <utility>
 #include <vector>
 
 namespace vcg {
@@ -31,13 +32,17 @@ inline bool BoxesTouch(const Box3d &a, const Box3d &b)
 class SurfaceGrid
 {
 public:
-    SurfaceGrid(const std::vector<Point3d> &positions, const std::vector<std::array<int, 3>> &faces)
+    /// Faces flagged in `skip` (empty, or one flag per face) stay out of the grid.
+    SurfaceGrid(const std::vector<Point3d> &positions, const std::vector<std::array<int, 3>> &faces,
+                const std::vector<char> &skip = {})
         : positions_(positions), faces_(faces), faceBox_(faces.size())
     {
         for (size_t f = 0; f < faces.size(); ++f) {
+            if (!skip.empty() && skip[f]) continue;
             for (int v : faces[f]) faceBox_[f].Add(positions[v]);
             box_.Add(faceBox_[f]);
         }
+        cellOffset_.assign(2, 0);  // one empty cell, unless there is something to bucket
         if (box_.IsNull()) return;
         box_.Offset(box_.Diag() * 1e-9 + 1e-300);  // no zero-thickness box for a flat mesh
         BestDim<double>(std::max<size_t>(faces.size(), 1), box_.Dim(), dim_);
@@ -52,6 +57,22 @@ public:
         std::vector<int> filled(cellOffset_.begin(), cellOffset_.end() - 1);
         ForEachCellOfFaces([&](size_t cell, int f) { cellFaces_[filled[cell]++] = f; });
     }
+
+    Point3i Dim() const { return dim_; }
+    /// The cell holding p (clamped to the grid).
+    Point3i CellOf(const Point3d &p) const
+    {
+        Point3i c;
+        for (int i = 0; i < 3; ++i) c[i] = std::clamp(int((p[i] - box_.min[i]) / cellSize_[i]), 0, dim_[i] - 1);
+        return c;
+    }
+    size_t CellIndex(int x, int y, int z) const { return (size_t(z) * dim_[1] + y) * dim_[0] + x; }
+    /// The faces in cell `cell`, in increasing order: [first, last) of one flat array.
+    std::pair<const int *, const int *> FacesIn(size_t cell) const
+    {
+        return {cellFaces_.data() + cellOffset_[cell], cellFaces_.data() + cellOffset_[cell + 1]};
+    }
+    const Box3d &FaceBox(int f) const { return faceBox_[f]; }
 
     /// Whether some face (as a filled triangle) lies within `radius` of p. Cells are visited
     /// in shells around p's own, so a point on or near the surface answers after a cell or two.
@@ -77,18 +98,11 @@ public:
     }
 
 private:
-    Point3i CellOf(const Point3d &p) const
-    {
-        Point3i c;
-        for (int i = 0; i < 3; ++i) c[i] = std::clamp(int((p[i] - box_.min[i]) / cellSize_[i]), 0, dim_[i] - 1);
-        return c;
-    }
-    size_t CellIndex(int x, int y, int z) const { return (size_t(z) * dim_[1] + y) * dim_[0] + x; }
-
     template <class Visit>
     void ForEachCellOfFaces(Visit visit) const
     {
         for (int f = 0; f < int(faces_.size()); ++f) {
+            if (faceBox_[f].IsNull()) continue;  // skipped
             const Point3i lo = CellOf(faceBox_[f].min), hi = CellOf(faceBox_[f].max);
             for (int z = lo[2]; z <= hi[2]; ++z)
                 for (int y = lo[1]; y <= hi[1]; ++y)
@@ -98,8 +112,9 @@ private:
 
     bool CellHasFaceWithin(size_t cell, const Point3d &p, double radius, const Box3d &query) const
     {
-        for (int k = cellOffset_[cell]; k < cellOffset_[cell + 1]; ++k) {
-            const int f = cellFaces_[k];
+        const auto [first, last] = FacesIn(cell);
+        for (const int *face = first; face != last; ++face) {
+            const int f = *face;
             if (!BoxesTouch(faceBox_[f], query)) continue;
             const std::array<int, 3> &t = faces_[f];
             const Triangle3<double> triangle(positions_[t[0]], positions_[t[1]], positions_[t[2]]);
