@@ -21,6 +21,8 @@ server="$root/build/meshlab-prefix/bin/meshlabserver"
 start=$(date +%s.%N)
 status=0
 # Layer 0 is the input, layer 1 the approximation (the filter adds it after the input).
+# meshlabserver 2020.09 logs "Error: trying to save 3 meshes, but only 2 available" when
+# there are more -o than layers, and still saves each -o from its -l layer.
 xvfb-run -a "$server" -i "$mesh" -s "$script" \
   -o "$out/${name}_vsa.ply" -l 1 -m fc \
   -o "$out/${name}_vsa.off" -l 1 -m mp \
