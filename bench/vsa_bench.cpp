@@ -148,7 +148,9 @@ int main(int argc, char **argv)
             .Add("anchors", meshing.anchors)
             .Add("regions_fallback", meshing.regionsByEarClipping + meshing.regionsWithSteinerVertex +
                                          meshing.regionsKeptAsInput)
-            .Add("regions_kept_as_input", meshing.regionsKeptAsInput);
+            .Add("regions_kept_as_input", meshing.regionsKeptAsInput)
+            .Add("mesh_passes", meshing.passes)
+            .Add("mesh_output_pass", meshing.repairRounds + 1);
         vsa_bench::AddOutputQualityKeys(json, m, output);
         if (!o.out.empty() && !WriteApproximation(output, meshing.faceRegion, partition.proxyCount, o.out)) {
             json.Add("error", "cannot write " + o.out).Print();

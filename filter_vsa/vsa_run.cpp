@@ -57,11 +57,12 @@ void Describe(const vsa::ShapeApproximationResult &r, const VsaFilterSettings &s
                .arg(m.regionsKeptAsInput)
                .arg(m.regionsCut);
     log << QString("VSA: output: %1").arg(QString::fromStdString(m.validity.Summary()));
-    log << QString("VSA: time: seeding %1 s, iterations %2 s, meshing %3 s, total %4 s")
+    log << QString("VSA: time: seeding %1 s, iterations %2 s, meshing %3 s (%5), total %4 s")
                .arg(r.secondsSeeding, 0, 'f', 3)
                .arg(r.secondsIterations, 0, 'f', 3)
                .arg(r.secondsMeshing, 0, 'f', 3)
-               .arg(r.secondsSeeding + r.secondsIterations + r.secondsMeshing, 0, 'f', 3);
+               .arg(r.secondsSeeding + r.secondsIterations + r.secondsMeshing, 0, 'f', 3)
+               .arg(m.passes == 1 ? QString("1 pass") : QString("%1 passes").arg(m.passes));
 
     auto &f = outcome.figures;
     f["proxy_count"] = p.proxyCount;
@@ -79,6 +80,7 @@ void Describe(const vsa::ShapeApproximationResult &r, const VsaFilterSettings &s
     f["seconds_seeding"] = r.secondsSeeding;
     f["seconds_iterations"] = r.secondsIterations;
     f["seconds_meshing"] = r.secondsMeshing;
+    f["meshing_passes"] = m.passes;
 }
 
 }  // namespace

@@ -119,6 +119,20 @@ TEST(MeshingRealMeshes, InputFacesOnlyWithinTheFaceBudget)
     EXPECT_GT(unbounded.regionsKeptAsInput, 0);
     EXPECT_GT(bounded.validity.selfIntersections, 0);
     EXPECT_LT(bounded.validity.faces, unbounded.validity.faces);
+    // The passes are reported: every repair round ran (defects were left), the output is one
+    // of them, and keeping input faces took passes of its own.
+    const int rounds = MeshingParam().repairRounds;
+    EXPECT_GE(bounded.passes, 1 + rounds);
+    EXPECT_LE(bounded.passes, 1 + 2 * rounds);
+    EXPECT_LT(bounded.repairRounds, bounded.passes);
+    EXPECT_GT(unbounded.passes, 1 + rounds);
+    EXPECT_GT(unbounded.repairRounds, rounds);
+    MeshingParam once;
+    once.repairRounds = 0;
+    MeshingReport single;
+    CheckCase(c, false, once, &single);
+    EXPECT_EQ(single.passes, 1);
+    EXPECT_EQ(single.repairRounds, 0);
 }
 
 TEST(MeshingSweep, RealMeshes)

@@ -89,6 +89,8 @@ TEST(Meshing, CubeSixRegionsGivesTheEightCorners)
         EXPECT_EQ(run.out.VN(), 8);
         EXPECT_EQ(run.out.FN(), 12);
         EXPECT_EQ(run.report.validity.selfIntersections, 0);
+        EXPECT_EQ(run.report.passes, 1);  // nothing to repair
+        EXPECT_EQ(run.report.repairRounds, 0);
         for (const Point3d &p : run.output.positions)
             for (int i = 0; i < 3; ++i) EXPECT_NEAR(std::abs(p[i]), 1.0, 1e-7);
         // Hausdorff distance 0: the output's corners are the cube's, and every input vertex

@@ -82,7 +82,8 @@ struct MeshingReport
     int duplicateChordAnchors = 0;  ///< splitting chains that joined the same two anchors
     int repairAnchors = 0;          ///< added where an earlier pass's output folded or intersected itself
     int pinnedAnchors = 0;          ///< left unprojected where projecting made the output intersect itself
-    int repairRounds = 0;           ///< passes it took to reach the output
+    int repairRounds = 0;           ///< the output's pass, counting the first one as 0
+    int passes = 0;                 ///< passes run, the first one included: the cost of the repairs
     int steinerVertices = 0;
 
     int ignoredFaces = 0;   ///< input faces with a repeated vertex (no area)
@@ -106,6 +107,7 @@ struct MeshingReport
         s << ")";
         if (repairAnchors) s << ", " << repairAnchors << " anchors added against folds and self-intersections";
         if (pinnedAnchors) s << ", " << pinnedAnchors << " anchors left unprojected against self-intersections";
+        if (passes > 1) s << ", " << passes << " passes (output from pass " << repairRounds + 1 << ")";
         s << "; triangulated by flooding " << regionsByFlooding << ", ear clipping " << regionsByEarClipping;
         if (regionsWithSteinerVertex) s << ", fan around an extra vertex " << regionsWithSteinerVertex;
         if (regionsKeptAsInput) s << ", kept as input faces against self-intersections " << regionsKeptAsInput;
@@ -577,6 +579,7 @@ MeshingReport BuildApproximatingMesh(const IndexedMesh &in, const Partition &par
     CellFlooding flooding(s);
     detail::MeshingPass pass =
         detail::RunMeshingPass<CoordType>(s, proxies, param, gap, requiredAnchors, pinnedAnchors, inputCells, flooding);
+    report.passes = 1;
     detail::PassDefects defects;
     if (param.repairRounds > 0) defects = detail::FindDefects(pass);
     size_t fewest = defects.Count();
@@ -589,6 +592,7 @@ MeshingReport BuildApproximatingMesh(const IndexedMesh &in, const Partition &par
         if (detail::RespondToDefects(s, previous, defects, requiredAnchors, pinnedAnchors) == 0) break;
         detail::MeshingPass next = detail::RunMeshingPass<CoordType>(s, proxies, param, gap, requiredAnchors,
                                                                      pinnedAnchors, inputCells, flooding, &previous);
+        ++report.passes;
         defects = detail::FindDefects(next, &previous, &defects);
         latest = std::move(next);
         if (defects.Count() < fewest) {
@@ -620,6 +624,7 @@ MeshingReport BuildApproximatingMesh(const IndexedMesh &in, const Partition &par
                 break;
             detail::MeshingPass next = detail::RunMeshingPass<CoordType>(s, proxies, param, gap, requiredAnchors,
                                                                          pinnedAnchors, inputCells, flooding, &latest);
+            ++report.passes;
             if (double(next.triangles.size()) > faceBudget) break;  // and it only grows
             defects = detail::FindDefects(next, &latest, &defects);
             latest = std::move(next);
