@@ -19,37 +19,17 @@ namespace vsa_test {
 /// planar patch with a border, oriented along u x v.
 inline void MakePlanarGrid(TMesh &m, int n, const vcg::Point3f &origin, const vcg::Point3f &u, const vcg::Point3f &v)
 {
-    std::vector<vcg::Point3f> coords;
-    std::vector<vcg::Point3i> tris;
-    for (int j = 0; j <= n; ++j)
-        for (int i = 0; i <= n; ++i) coords.push_back(origin + u * (float(i) / n) + v * (float(j) / n));
-    const auto at = [n](int i, int j) { return j * (n + 1) + i; };
-    for (int j = 0; j < n; ++j)
-        for (int i = 0; i < n; ++i) {
-            tris.emplace_back(at(i, j), at(i + 1, j), at(i + 1, j + 1));
-            tris.emplace_back(at(i, j), at(i + 1, j + 1), at(i, j + 1));
-        }
-    BuildFromLists(m, coords, tris);
+    MakeQuadGrid(m, n, n, [&](int i, int j) { return origin + u * (float(i) / n) + v * (float(j) / n); });
 }
 
 /// A sheet folded at a right angle: an n x n grid on the plane z = 0 (x in [-1, 0]) and one on
 /// the plane x = 0 (z in [0, 1]), sharing the fold's vertices (y in [0, 1]).
 inline void MakeFoldedSheet(TMesh &m, int n)
 {
-    std::vector<vcg::Point3f> coords;
-    std::vector<vcg::Point3i> tris;
-    for (int j = 0; j <= n; ++j)
-        for (int i = 0; i <= 2 * n; ++i) {
-            const float y = float(j) / n;
-            coords.push_back(i <= n ? vcg::Point3f(float(i) / n - 1, y, 0) : vcg::Point3f(0, y, float(i - n) / n));
-        }
-    const auto at = [n](int i, int j) { return j * (2 * n + 1) + i; };
-    for (int j = 0; j < n; ++j)
-        for (int i = 0; i < 2 * n; ++i) {
-            tris.emplace_back(at(i, j), at(i + 1, j), at(i + 1, j + 1));
-            tris.emplace_back(at(i, j), at(i + 1, j + 1), at(i, j + 1));
-        }
-    BuildFromLists(m, coords, tris);
+    MakeQuadGrid(m, 2 * n, n, [n](int i, int j) {
+        const float y = float(j) / n;
+        return i <= n ? vcg::Point3f(float(i) / n - 1, y, 0) : vcg::Point3f(0, y, float(i - n) / n);
+    });
 }
 
 /// `count` tessellated cubes (MakeTessellatedCube(n)) side by side along x, 3 apart.

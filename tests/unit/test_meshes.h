@@ -170,40 +170,38 @@ inline void MakeBoxWithHole(TMesh &m, int segments, float h = 0.5f, float r = 0.
     BuildFromLists(m, coords, tris);
 }
 
-/// The square [-1,1]^2 in the plane z = 0 as an n x n grid of quads split in two, facing +z.
-inline void MakeFlatSquare(TMesh &m, int n)
+/// A (u, v) grid of nu x nv quads, each split in two, with vertex (i, j) at position(i, j)
+/// (i in [0, nu], j in [0, nv]); faces (i, j) -> (i+1, j) -> (i+1, j+1) are counter-clockwise.
+template <class Position>
+void MakeQuadGrid(TMesh &m, int nu, int nv, Position position)
 {
     std::vector<vcg::Point3f> coords;
     std::vector<vcg::Point3i> tris;
-    for (int j = 0; j <= n; ++j)
-        for (int i = 0; i <= n; ++i) coords.emplace_back(-1.f + 2.f * i / n, -1.f + 2.f * j / n, 0.f);
-    auto at = [&](int i, int j) { return j * (n + 1) + i; };
-    for (int j = 0; j < n; ++j)
-        for (int i = 0; i < n; ++i) {
+    for (int j = 0; j <= nv; ++j)
+        for (int i = 0; i <= nu; ++i) coords.push_back(position(i, j));
+    auto at = [&](int i, int j) { return j * (nu + 1) + i; };
+    for (int j = 0; j < nv; ++j)
+        for (int i = 0; i < nu; ++i) {
             tris.emplace_back(at(i, j), at(i + 1, j), at(i + 1, j + 1));
             tris.emplace_back(at(i, j), at(i + 1, j + 1), at(i, j + 1));
         }
     BuildFromLists(m, coords, tris);
 }
 
+/// The square [-1,1]^2 in the plane z = 0 as an n x n grid of quads split in two, facing +z.
+inline void MakeFlatSquare(TMesh &m, int n)
+{
+    MakeQuadGrid(m, n, n, [n](int i, int j) { return vcg::Point3f(-1.f + 2.f * i / n, -1.f + 2.f * j / n, 0.f); });
+}
+
 /// A flat "C" in the plane z = 0, facing +z: the band of radii [1, 2] over the angles
 /// [gap/2, 2 pi - gap/2], as `rings` x `sectors` quads split in two.
 inline void MakeFlatC(TMesh &m, int rings, int sectors, double gap)
 {
-    std::vector<vcg::Point3f> coords;
-    std::vector<vcg::Point3i> tris;
-    for (int s = 0; s <= sectors; ++s)
-        for (int k = 0; k <= rings; ++k) {
-            const double phi = gap / 2 + (2 * M_PI - gap) * s / sectors, radius = 1 + double(k) / rings;
-            coords.emplace_back(float(radius * std::cos(phi)), float(radius * std::sin(phi)), 0.f);
-        }
-    auto at = [&](int k, int s) { return s * (rings + 1) + k; };
-    for (int s = 0; s < sectors; ++s)
-        for (int k = 0; k < rings; ++k) {
-            tris.emplace_back(at(k, s), at(k + 1, s), at(k + 1, s + 1));
-            tris.emplace_back(at(k, s), at(k + 1, s + 1), at(k, s + 1));
-        }
-    BuildFromLists(m, coords, tris);
+    MakeQuadGrid(m, rings, sectors, [&](int k, int s) {
+        const double phi = gap / 2 + (2 * M_PI - gap) * s / sectors, radius = 1 + double(k) / rings;
+        return vcg::Point3f(float(radius * std::cos(phi)), float(radius * std::sin(phi)), 0.f);
+    });
 }
 
 }  // namespace vsa_test

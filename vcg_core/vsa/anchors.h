@@ -5,8 +5,8 @@
 #define VSA_ANCHORS_H
 
 #include <vsa/boundary_chains.h>
-#include <vsa/surface_grid.h>
 #include <vsa/proxy.h>
+#include <vsa/surface_grid.h>
 
 #include <algorithm>
 #include <cmath>

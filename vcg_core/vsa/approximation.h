@@ -53,9 +53,9 @@ struct ApproximationParam
     bool teleport = true;
     /// Full Lloyd iterations during seeding: after random seeds, after each hierarchical round
     /// (at least one), each time farthest seeding doubles the count (every insertion is already
-    /// relaxed on the regions it touches); also the confined iterations of Split (at least one). 3 lowered the
-    /// final energy by 0.5-7% on smooth meshes at small k (CGAL's bunny and armadillo, k=20 and
-    /// 100) for 1.5x the seeding time.
+    /// relaxed on the regions it touches); also the confined iterations of Split (at least
+    /// one). 3 lowered the final energy by 0.5-7% on smooth meshes at small k (CGAL's bunny and
+    /// armadillo, k=20 and 100) for 1.5x the seeding time.
     int relaxations = 3;
 };
 

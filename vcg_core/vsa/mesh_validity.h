@@ -4,8 +4,8 @@
 #ifndef VSA_MESH_VALIDITY_H
 #define VSA_MESH_VALIDITY_H
 
-#include <vsa/surface_grid.h>
 #include <vsa/indexed_mesh.h>
+#include <vsa/surface_grid.h>
 
 #include <algorithm>
 #include <array>

@@ -258,8 +258,7 @@ template <class CoordType>
 MeshingPass RunMeshingPass(const MeshingSurface &s, const std::vector<Proxy> &proxies, const MeshingParam &param,
                            ChordGapTest *gap, const std::vector<char> &requiredAnchors,
                            const std::vector<char> &pinnedAnchors, const std::vector<char> &inputCells,
-                           CellFlooding &flooding,
-                           const MeshingPass *previous = nullptr)
+                           CellFlooding &flooding, const MeshingPass *previous = nullptr)
 {
     MeshingPass pass;
     pass.anchors = SelectAnchors(s, proxies, param.chordThreshold, requiredAnchors, gap);
@@ -328,29 +327,19 @@ struct PassDefects
         int cell, edge, otherEdge;  ///< polygon edge k joins polygon vertices k and k + 1
     };
     std::vector<Crossing> crossings;
+    std::vector<char> degenerate;  ///< per face of the pass's output: DegenerateFaceMask
     size_t Count() const { return intersections.size() + crossings.size(); }
 };
 
-/// The output of a pass, as far as self-intersections are concerned.
-inline IndexedMesh OutputOf(const MeshingPass &pass)
-{
-    IndexedMesh output;
-    output.positions = pass.positions;
-    output.faces = pass.triangles;
-    return output;
-}
-
-/// Per face of `output` (of pass), the face of `previousOutput` (of previous) it repeats: same
-/// cell, same place in the cell's range, same corner positions in the same order, and as
-/// degenerate or not; else -1. FacesIntersect sees nothing else of a face, so a pair of
+/// Per face of `pass`, the face of `previous` it repeats: same cell, same place in the cell's
+/// range, same corner positions in the same order, and as degenerate or not (the passes' masks,
+/// see DegenerateFaceMask); else -1. FacesIntersect sees nothing else of a face, so a pair of
 /// repeated faces intersects in both passes or in neither; all -1 unless repeated faces keep
 /// their order, which keeps the pair's roles (f < g) in that test.
-inline std::vector<int> RepeatedFaces(const MeshingPass &pass, const IndexedMesh &output,
-                                      const MeshingPass &previous, const IndexedMesh &previousOutput)
+inline std::vector<int> RepeatedFaces(const MeshingPass &pass, const std::vector<char> &degenerate,
+                                      const MeshingPass &previous, const std::vector<char> &wasDegenerate)
 {
     std::vector<int> repeats(pass.triangles.size(), -1);
-    const std::vector<char> degenerate = DegenerateFaceMask(output);
-    const std::vector<char> wasDegenerate = DegenerateFaceMask(previousOutput);
     auto same = [&](int f, int g) {
         for (int i = 0; i < 3; ++i)
             if (pass.positions[pass.triangles[f][i]] != previous.positions[previous.triangles[g][i]]) return false;
@@ -379,9 +368,13 @@ inline PassDefects FindDefects(const MeshingPass &pass, const MeshingPass *previ
                                const PassDefects *previousDefects = nullptr)
 {
     PassDefects defects;
-    const IndexedMesh output = OutputOf(pass);
+    IndexedMesh output;  // as far as self-intersections are concerned
+    output.positions = pass.positions;
+    output.faces = pass.triangles;
+    defects.degenerate = DegenerateFaceMask(output);
     if (previous) {
-        const std::vector<int> repeats = RepeatedFaces(pass, output, *previous, OutputOf(*previous));
+        const std::vector<int> repeats =
+            RepeatedFaces(pass, defects.degenerate, *previous, previousDefects->degenerate);
         std::vector<char> fresh(repeats.size());
         std::vector<int> repeatOf(previous->triangles.size(), -1);
         for (size_t f = 0; f < repeats.size(); ++f) {
@@ -398,7 +391,7 @@ inline PassDefects FindDefects(const MeshingPass &pass, const MeshingPass *previ
     for (int c = 0; c < int(pass.polygons.size()); ++c)
         if (pass.cellMethod[c] != CellMethod::InputFaces)  // its own faces: nothing folds
             for (const auto &[i, j] : CrossingPolygonEdges(pass.polygons[c], pass.positions, pass.cellNormal[c]))
-            defects.crossings.push_back({c, i, j});
+                defects.crossings.push_back({c, i, j});
     return defects;
 }
 

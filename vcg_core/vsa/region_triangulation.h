@@ -153,10 +153,10 @@ private:
     using QueueItem = std::pair<double, int>;  ///< distance, vertex
 
     const MeshingSurface &s_;
-    std::vector<int> edgeOffset_;     ///< edges from vertex u: edgeTo_[edgeOffset_[u] .. u+1)
-    std::vector<int> edgeTo_;         ///< the other end of each edge
+    std::vector<int> edgeOffset_;   ///< edges from vertex u: edgeTo_[edgeOffset_[u] .. u+1)
+    std::vector<int> edgeTo_;       ///< the other end of each edge
     std::vector<double> edgeLength_;
-    std::vector<int> interiorOf_;     ///< per vertex: the cell it is inside of, -1 on a loop
+    std::vector<int> interiorOf_;   ///< per vertex: the cell it is inside of, -1 on a loop
     std::vector<QueueItem> queue_;  ///< a min-heap, kept to reuse its storage
     std::vector<int> color_;
     std::vector<double> distance_;
