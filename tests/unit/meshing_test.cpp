@@ -591,3 +591,48 @@ TEST(Meshing, PositionsAreRoundedAsTheOutputStoresThem)
     const Point3d exact(1.0 / 3, 0.1, 1e300);
     EXPECT_EQ(detail::AsWritten<vcg::Point3d>(exact), exact);
 }
+
+// Repair passes update each cell's flooding instead of redoing it; the colours must be those
+// of a flooding from scratch, anchors added or removed, ties between equal distances (the
+// flat grid is full of them) included.
+TEST(Meshing, UpdatedFloodingEqualsAFreshOne)
+{
+    TMesh square, hemisphere;
+    vsa_test::MakeFlatSquare(square, 24);
+    vsa_test::MakeHemisphere(hemisphere, 12, 32);
+    for (const TMesh *m : {&square, &hemisphere}) {
+        SCOPED_TRACE(m == &square ? "flat square" : "hemisphere");
+        const IndexedMesh im = BuildIndexedMesh(*m);
+        const Partition partition = vsa_test::PartitionByRule(im, 3, [&](int f) {
+            const Point3d c = vsa_test::FaceCentroid(im, f);
+            return c[0] < -0.3 ? 0 : (c[1] < 0.2 ? 1 : 2);
+        });
+        MeshingSurface s;
+        std::string error;
+        ASSERT_TRUE(BuildMeshingSurface(im, partition.faceRegion, 3, s, error)) << error;
+        // Anchor sets that add and drop anchors in turn: the coarse ones, plus loop vertices
+        // picked by a fixed pseudo-random sequence.
+        std::vector<AnchorSet> sets = {SelectAnchors(s, partition.proxies, 0.5)};
+        unsigned state = 12345;
+        for (int step = 0; step < 150; ++step) {
+            std::vector<char> required(s.VertexCount(), 0);
+            for (const std::vector<int> &loop : s.cellLoop)
+                for (int v : loop) {
+                    state = state * 1103515245u + 12345u;
+                    required[v] = (state >> 16) % 7 == 0;
+                }
+            sets.push_back(SelectAnchors(s, partition.proxies, 0.5, required));
+            ASSERT_GT(sets.back().Count(), sets.front().Count());
+        }
+        CellFlooding updated(s);
+        for (const AnchorSet &anchors : sets)
+            for (int c = 0; c < s.CellCount(); ++c) {
+                CellFlooding fresh(s);
+                const std::set<std::array<int, 3>> expected = fresh.Triples(c, anchors);
+                EXPECT_GT(expected.size(), 0u);
+                EXPECT_EQ(updated.Triples(c, anchors), expected) << "cell " << c;
+                EXPECT_EQ(updated.VerticesDeepestFirst(c), fresh.VerticesDeepestFirst(c)) << "cell " << c;
+            }
+    }
+}
+

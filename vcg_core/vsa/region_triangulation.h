@@ -78,6 +78,12 @@ struct CellTriangulation
 /// anchor along edges, boundary vertices first along the boundary (so each chord's vertices
 /// split between its two anchors), then interior vertices by Dijkstra from the boundary. A
 /// face with three colours stands for the output triangle on those three anchors.
+///
+/// Repair passes flood the same cells again after adding a few anchors, so each cell keeps
+/// its flooding and updates it: only vertices whose path starts at a boundary vertex that
+/// changed are flooded again, and those the changes bring closer. The colours are those of
+/// a Dijkstra from scratch that pops by (distance, vertex): a vertex takes its colour from
+/// its neighbour with the smallest (distance, vertex) among those that give its distance.
 class CellFlooding
 {
 public:
@@ -85,7 +91,14 @@ public:
     /// cell each vertex is inside of, so that each pass's Dijkstra neither walks faces nor
     /// measures an edge twice.
     explicit CellFlooding(const MeshingSurface &s)
-        : s_(s), color_(s.positions.size(), -1), distance_(s.positions.size(), 0), onLoop_(s.positions.size(), 0)
+        : s_(s),
+          color_(s.positions.size(), -1),
+          distance_(s.positions.size(), 0),
+          parent_(s.positions.size(), -1),
+          root_(s.positions.size(), -1),
+          changed_(s.positions.size(), 0),
+          loopColor_(s.CellCount()),
+          loopDistance_(s.CellCount())
     {
         const int vertexCount = s.VertexCount();
         // Each edge once: from the higher of its two faces, or from its only one.
@@ -111,74 +124,72 @@ public:
                 interiorOf_[v] = s.faceCell[s.vertexFaces[k]];
         for (const std::vector<int> &loop : s.cellLoop)
             for (int v : loop) interiorOf_[v] = -1;
+        interiorOffset_.assign(size_t(s.CellCount()) + 1, 0);
+        for (int v = 0; v < vertexCount; ++v)
+            if (interiorOf_[v] >= 0) ++interiorOffset_[interiorOf_[v] + 1];
+        std::partial_sum(interiorOffset_.begin(), interiorOffset_.end(), interiorOffset_.begin());
+        interior_.resize(interiorOffset_.back());
+        fill.assign(interiorOffset_.begin(), interiorOffset_.end() - 1);
+        for (int v = 0; v < vertexCount; ++v)
+            if (interiorOf_[v] >= 0) interior_[fill[interiorOf_[v]]++] = v;
     }
 
     /// Sorted anchor triples of the three-coloured faces of cell c.
     std::set<std::array<int, 3>> Triples(int c, const AnchorSet &anchors)
     {
-        ColorLoop(c, anchors);
-        FloodInterior(c);
+        Flood(c, anchors);
         std::set<std::array<int, 3>> triples;
         for (int k = s_.cellFaceOffset[c]; k < s_.cellFaceOffset[c + 1]; ++k) {
             const auto &t = s_.faces[s_.cellFaces[k]];
-            std::array<int, 3> colors = {color_[t[0]], color_[t[1]], color_[t[2]]};
+            const std::array<int, 3> colors = {color_[t[0]], color_[t[1]], color_[t[2]]};
             if (colors[0] < 0 || colors[1] < 0 || colors[2] < 0) continue;
             if (colors[0] == colors[1] || colors[1] == colors[2] || colors[2] == colors[0]) continue;
-            triples.insert(OutputRegistry::Sorted(colors));
+            triples.insert(OutputRegistry::Sorted({anchors.anchorOfVertex[colors[0]],
+                                                   anchors.anchorOfVertex[colors[1]],
+                                                   anchors.anchorOfVertex[colors[2]]}));
         }
         return triples;
     }
 
-    /// Vertices of the last flooded cell, deepest inside first: interior vertices by their
+    /// Vertices of cell c, flooded last, deepest inside first: interior vertices by their
     /// distance to the anchors, farthest first, then the boundary vertices.
-    std::vector<int> VerticesDeepestFirst() const
+    std::vector<int> VerticesDeepestFirst(int c) const
     {
-        std::vector<int> vertices(touched_);
-        std::sort(vertices.begin(), vertices.end(), [&](int a, int b) {
-            if (onLoop_[a] != onLoop_[b]) return onLoop_[a] < onLoop_[b];
-            if (distance_[a] != distance_[b]) return distance_[a] > distance_[b];
-            return a < b;
-        });
+        auto deeper = [&](int a, int b) { return distance_[a] != distance_[b] ? distance_[a] > distance_[b] : a < b; };
+        std::vector<int> vertices, loop(s_.cellLoop[c]);
+        for (int k = interiorOffset_[c]; k < interiorOffset_[c + 1]; ++k)
+            if (color_[interior_[k]] >= 0) vertices.push_back(interior_[k]);
+        std::sort(vertices.begin(), vertices.end(), deeper);
+        std::sort(loop.begin(), loop.end(), deeper);
+        vertices.insert(vertices.end(), loop.begin(), loop.end());
         return vertices;
-    }
-
-    /// Clears what the last cell left in the per-vertex arrays.
-    void Reset()
-    {
-        for (int v : touched_) color_[v] = -1, onLoop_[v] = 0;
-        touched_.clear();
     }
 
 private:
     using QueueItem = std::pair<double, int>;  ///< distance, vertex
 
     const MeshingSurface &s_;
-    std::vector<int> edgeOffset_;   ///< edges from vertex u: edgeTo_[edgeOffset_[u] .. u+1)
-    std::vector<int> edgeTo_;       ///< the other end of each edge
+    std::vector<int> edgeOffset_;  ///< edges from vertex u: edgeTo_[edgeOffset_[u] .. u+1)
+    std::vector<int> edgeTo_;      ///< the other end of each edge
     std::vector<double> edgeLength_;
-    std::vector<int> interiorOf_;   ///< per vertex: the cell it is inside of, -1 on a loop
+    std::vector<int> interiorOf_;  ///< per vertex: the cell it is inside of, -1 on a loop
+    std::vector<int> interiorOffset_, interior_;  ///< cell c's interior: interior_[interiorOffset_[c] .. c+1)
     std::vector<QueueItem> queue_;  ///< a min-heap, kept to reuse its storage
-    std::vector<int> color_;
+    // Per vertex: loop vertices hold what the cell flooded last gave them, interior vertices
+    // what their own cell's last flooding did.
+    std::vector<int> color_;  ///< the anchor's surface vertex, -1 for none
     std::vector<double> distance_;
-    std::vector<char> onLoop_;
-    std::vector<int> touched_;
-
-    void Set(int v, int color, double distance)
-    {
-        if (color_[v] < 0 && !onLoop_[v]) touched_.push_back(v);
-        color_[v] = color;
-        distance_[v] = distance;
-    }
+    std::vector<int> parent_;    ///< interior vertex: the neighbour its colour came from
+    std::vector<int> root_;      ///< interior vertex: the loop vertex its path starts at
+    std::vector<char> changed_;  ///< loop vertex: changed since its cell's last flooding
+    std::vector<std::vector<int>> loopColor_;        ///< per cell and loop position, at its last flooding
+    std::vector<std::vector<double>> loopDistance_;  ///< (empty: not flooded yet)
 
     void ColorLoop(int c, const AnchorSet &anchors)
     {
-        Reset();
         const std::vector<int> &loop = s_.cellLoop[c];
         const int m = int(loop.size());
-        for (int v : loop) {
-            touched_.push_back(v);
-            onLoop_[v] = 1;
-        }
+        for (int v : loop) color_[v] = -1;
         const std::vector<int> at = detail::AnchorPositionsInLoop(s_, c, anchors);
         std::vector<double> arc;
         for (size_t k = 0; k < at.size(); ++k) {
@@ -186,9 +197,9 @@ private:
             arc.assign(1, 0.0);
             for (int t = from + 1; t <= to; ++t)
                 arc.push_back(arc.back() + (s_.positions[loop[t % m]] - s_.positions[loop[(t - 1) % m]]).Norm());
-            const int first = anchors.anchorOfVertex[loop[from]], last = anchors.anchorOfVertex[loop[to % m]];
-            color_[loop[from]] = first;
-            distance_[loop[from]] = 0;
+            const int first = loop[from], last = loop[to % m];
+            color_[first] = first;
+            distance_[first] = 0;
             for (int t = from + 1; t < to; ++t) {
                 const double fromFirst = arc[t - from], fromLast = arc.back() - fromFirst;
                 color_[loop[t % m]] = fromFirst <= fromLast ? first : last;
@@ -197,28 +208,75 @@ private:
         }
     }
 
-    // Pops go by (distance, vertex), so the colours do not depend on the order edges are tried.
-    void FloodInterior(int c)
+    void Push(int v)
     {
-        const std::greater<QueueItem> later;
+        queue_.push_back({distance_[v], v});
+        std::push_heap(queue_.begin(), queue_.end(), std::greater<QueueItem>());
+    }
+
+    /// Colours cell c for `anchors`: its loop, then its interior from the loop, anew or as an
+    /// update of its last flooding.
+    void Flood(int c, const AnchorSet &anchors)
+    {
+        ColorLoop(c, anchors);
+        const std::vector<int> &loop = s_.cellLoop[c];
+        std::vector<int> &lastColor = loopColor_[c];
+        std::vector<double> &lastDistance = loopDistance_[c];
+        const bool fresh = lastColor.empty();
+        lastColor.resize(loop.size());
+        lastDistance.resize(loop.size());
         queue_.clear();
-        for (int v : s_.cellLoop[c]) {
-            queue_.push_back({distance_[v], v});
-            std::push_heap(queue_.begin(), queue_.end(), later);
+        for (size_t k = 0; k < loop.size(); ++k) {
+            const int v = loop[k];
+            if (fresh || lastColor[k] != color_[v] || lastDistance[k] != distance_[v]) {
+                changed_[v] = 1;
+                Push(v);
+            }
+            lastColor[k] = color_[v];
+            lastDistance[k] = distance_[v];
         }
+        // Vertices whose path starts at a changed loop vertex start over; the vertices around
+        // them that keep their path flood them again.
+        const int first = interiorOffset_[c], last = interiorOffset_[c + 1];
+        for (int k = first; k < last; ++k) {
+            const int v = interior_[k];
+            if (fresh || color_[v] < 0 || changed_[root_[v]]) color_[v] = -1, parent_[v] = -1;
+        }
+        for (int k = first; k < last; ++k) {
+            const int v = interior_[k];
+            if (color_[v] >= 0) continue;
+            for (int e = edgeOffset_[v]; e < edgeOffset_[v + 1]; ++e) {
+                const int u = edgeTo_[e];
+                if (color_[u] >= 0 && (interiorOf_[u] == c || !changed_[u])) Push(u);
+            }
+        }
+        for (int v : loop) changed_[v] = 0;
+
+        const std::greater<QueueItem> later;
         while (!queue_.empty()) {
             std::pop_heap(queue_.begin(), queue_.end(), later);
             const auto [d, u] = queue_.back();
             queue_.pop_back();
-            if (d > distance_[u]) continue;  // stale entry
-            for (int k = edgeOffset_[u]; k < edgeOffset_[u + 1]; ++k) {
-                const int w = edgeTo_[k];
+            if (d != distance_[u] || color_[u] < 0) continue;  // stale entry, or a loop without anchors
+            const int uRoot = interiorOf_[u] == c ? root_[u] : u;
+            for (int e = edgeOffset_[u]; e < edgeOffset_[u + 1]; ++e) {
+                const int w = edgeTo_[e];
                 if (interiorOf_[w] != c) continue;
-                const double nd = d + edgeLength_[k];
-                if (color_[w] >= 0 && !(nd < distance_[w])) continue;
-                Set(w, color_[u], nd);
-                queue_.push_back({nd, w});
-                std::push_heap(queue_.begin(), queue_.end(), later);
+                const double nd = d + edgeLength_[e];
+                if (color_[w] >= 0) {
+                    if (nd > distance_[w]) continue;
+                    if (nd == distance_[w]) {
+                        const int p = parent_[w];
+                        if (p == u ? color_[w] == color_[u] && root_[w] == uRoot
+                                   : std::make_pair(distance_[p], p) < std::make_pair(d, u))
+                            continue;
+                    }
+                }
+                color_[w] = color_[u];
+                distance_[w] = nd;
+                parent_[w] = u;
+                root_[w] = uRoot;
+                Push(w);
             }
         }
     }
@@ -422,7 +480,7 @@ inline CellTriangulation TriangulateCell(const MeshingSurface &s, int c, const s
             return worst;
         };
         double bestQuality = -1;
-        for (int v : flooding.VerticesDeepestFirst()) {
+        for (int v : flooding.VerticesDeepestFirst(c)) {
             const double quality = fanQuality(s.positions[v]);
             if (quality > bestQuality) {
                 bestQuality = quality;
@@ -440,7 +498,6 @@ inline CellTriangulation TriangulateCell(const MeshingSurface &s, int c, const s
             result.triangles.push_back({polygon[k], polygon[(k + 1) % polygon.size()], nextVertex});
     }
     for (const auto &t : result.triangles) registry.AddFace(t);
-    flooding.Reset();
     return result;
 }
 
