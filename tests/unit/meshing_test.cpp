@@ -636,3 +636,35 @@ TEST(Meshing, UpdatedFloodingEqualsAFreshOne)
     }
 }
 
+// Keeping a cell's input faces cannot undo an intersection that is in the input: two
+// overlapping cubes, one region per side, keep their 12 sides as meshed polygons, their
+// intersections reported.
+TEST(Meshing, IntersectionsOfTheInputItselfAreNotRepairedWithInputFaces)
+{
+    TMesh cube;
+    vsa_test::MakeTessellatedCube(cube, 1);
+    std::vector<vcg::Point3f> coords;
+    std::vector<vcg::Point3i> tris;
+    for (const vcg::Point3f shift : {vcg::Point3f(0, 0, 0), vcg::Point3f(1, 1, 1)}) {
+        const int first = int(coords.size());
+        for (const auto &v : cube.vert) coords.push_back(v.cP() + shift);
+        for (const auto &f : cube.face)
+            tris.emplace_back(first + vcg::tri::Index(cube, f.cV(0)), first + vcg::tri::Index(cube, f.cV(1)),
+                              first + vcg::tri::Index(cube, f.cV(2)));
+    }
+    TMesh cubes;
+    vsa_test::BuildFromLists(cubes, coords, tris);
+    const IndexedMesh im = BuildIndexedMesh(cubes);
+    ASSERT_GT(detail::SelfIntersectingPairs(im).size(), 0u);
+    const Partition partition = vsa_test::PartitionByRule(im, 12, [&](int f) {
+        return vsa_test::DominantAxisLabel(vsa_test::FaceNormal(im, f)) + (f < cube.FN() ? 0 : 6);
+    });
+    MeshingRun run;
+    Mesh(cubes, partition, MeshingParam(), run);
+    ExpectValidWithInputTopology(run);
+    EXPECT_EQ(run.out.FN(), 24);
+    EXPECT_GT(run.report.validity.selfIntersections, 0);
+    EXPECT_EQ(run.report.regionsKeptAsInput, 0);
+    // The first pass and a repair round that pins the anchors; no pass keeping input faces.
+    EXPECT_EQ(run.report.passes, 2);
+}

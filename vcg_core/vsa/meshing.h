@@ -486,14 +486,13 @@ inline double FacesKeepingInput(const MeshingSurface &s, const MeshingPass &pass
     return faces;
 }
 
-/// Marks the cells of the intersecting faces of `pass` to keep their input faces, with every
-/// vertex of their loops a pinned anchor, but for cells flagged in `excluded`. Returns how many
-/// cells it marked.
-inline int KeepCellsOfIntersectingFaces(const MeshingSurface &s, const MeshingPass &pass, const PassDefects &defects,
-                                        const std::vector<char> &excluded, std::vector<char> &requiredAnchors,
-                                        std::vector<char> &pinnedAnchors, std::vector<char> &inputCells)
+/// Marks the cells flagged in `flagged` (see CellsOfIntersectingFaces) to keep their input
+/// faces, with every vertex of their loops a pinned anchor, but for cells flagged in
+/// `excluded`. Returns how many cells it marked.
+inline int KeepInputFacesOfCells(const MeshingSurface &s, const std::vector<char> &flagged,
+                                 const std::vector<char> &excluded, std::vector<char> &requiredAnchors,
+                                 std::vector<char> &pinnedAnchors, std::vector<char> &inputCells)
 {
-    const std::vector<char> flagged = CellsOfIntersectingFaces(s, pass, defects);
     int marked = 0;
     for (int c = 0; c < s.CellCount(); ++c) {
         if (!flagged[c] || inputCells[c] || excluded[c]) continue;
@@ -599,12 +598,22 @@ MeshingReport BuildApproximatingMesh(const IndexedMesh &in, const Partition &par
     // none is left; except cells where the input itself intersects, which that cannot help.
     if (!passDefects.intersections.empty() && param.maxInputFacesGrowth > 0 &&
         detail::FacesKeepingInput(s, pass, passDefects) <= param.maxInputFacesGrowth * double(pass.triangles.size())) {
-        std::vector<char> intersectingInput(s.CellCount(), 0);
+        // Where the input intersects is looked for only in the cells this step considers:
+        // testing the whole input costs more than a pass.
+        std::vector<char> intersectingInput(s.CellCount(), 0), inputTested(s.CellCount(), 0);
         std::vector<int> cellOfInputFace(in.FaceCount(), -1);
         for (int f = 0; f < s.FaceCount(); ++f) cellOfInputFace[s.sourceFace[f]] = s.faceCell[f];
-        for (const auto &[f, g] : detail::SelfIntersectingPairs(in))
-            for (int c : {cellOfInputFace[f], cellOfInputFace[g]})
-                if (c >= 0) intersectingInput[c] = 1;
+        auto testInputOf = [&](const std::vector<char> &cells) {
+            std::vector<char> faces(in.FaceCount(), 0);
+            bool any = false;
+            for (int f = 0; f < s.FaceCount(); ++f)
+                if (cells[s.faceCell[f]] && !inputTested[s.faceCell[f]]) faces[s.sourceFace[f]] = 1, any = true;
+            if (!any) return;
+            for (int c = 0; c < s.CellCount(); ++c) inputTested[c] |= cells[c];
+            for (const auto &[f, g] : detail::SelfIntersectingPairs(in, faces))
+                for (int c : {cellOfInputFace[f], cellOfInputFace[g]})
+                    if (c >= 0) intersectingInput[c] = 1;
+        };
         // It costs faces: taken only when it leaves fewer intersecting pairs within the budget.
         size_t fewestIntersections = passDefects.intersections.size();
         const double faceBudget = param.maxInputFacesGrowth * double(pass.triangles.size());
@@ -612,8 +621,10 @@ MeshingReport BuildApproximatingMesh(const IndexedMesh &in, const Partition &par
         latest = pass;
         for (int last = round + param.repairRounds; round < last && !defects.intersections.empty(); ++round) {
             if (cb) cb(20 + 50 * round / (2 * param.repairRounds + 1), "VSA meshing: keeping input faces against self-intersections");
-            if (detail::KeepCellsOfIntersectingFaces(s, latest, defects, intersectingInput, requiredAnchors,
-                                                     pinnedAnchors, inputCells) == 0)
+            const std::vector<char> flagged = detail::CellsOfIntersectingFaces(s, latest, defects);
+            testInputOf(flagged);
+            if (detail::KeepInputFacesOfCells(s, flagged, intersectingInput, requiredAnchors, pinnedAnchors,
+                                              inputCells) == 0)
                 break;
             detail::MeshingPass next = detail::RunMeshingPass<CoordType>(s, proxies, param, gap, requiredAnchors,
                                                                          pinnedAnchors, inputCells, flooding, &latest);
