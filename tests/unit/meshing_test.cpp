@@ -592,6 +592,43 @@ TEST(Meshing, PositionsAreRoundedAsTheOutputStoresThem)
     EXPECT_EQ(detail::AsWritten<vcg::Point3d>(exact), exact);
 }
 
+namespace {
+
+/// A mesh cut into three regions, and what successive repair passes could require on its
+/// cells' loops: loop vertices picked by a fixed pseudo-random sequence, so that anchors are
+/// added and dropped in turn.
+struct RepairSequence
+{
+    IndexedMesh mesh;
+    Partition partition;
+    MeshingSurface surface;
+    std::vector<std::vector<char>> required;
+};
+
+void MakeRepairSequence(const TMesh &m, int steps, RepairSequence &r)
+{
+    r.mesh = BuildIndexedMesh(m);
+    r.partition = vsa_test::PartitionByRule(r.mesh, 3, [&](int f) {
+        const Point3d c = vsa_test::FaceCentroid(r.mesh, f);
+        return c[0] < -0.3 ? 0 : (c[1] < 0.2 ? 1 : 2);
+    });
+    std::string error;
+    ASSERT_TRUE(BuildMeshingSurface(r.mesh, r.partition.faceRegion, 3, r.surface, error)) << error;
+    r.required.assign(1, {});
+    unsigned state = 12345;
+    for (int step = 0; step < steps; ++step) {
+        std::vector<char> required(r.surface.VertexCount(), 0);
+        for (const std::vector<int> &loop : r.surface.cellLoop)
+            for (int v : loop) {
+                state = state * 1103515245u + 12345u;
+                required[v] = (state >> 16) % 7 == 0;
+            }
+        r.required.push_back(required);
+    }
+}
+
+}  // namespace
+
 // Repair passes update each cell's flooding instead of redoing it; the colours must be those
 // of a flooding from scratch, anchors added or removed, ties between equal distances (the
 // flat grid is full of them) included.
@@ -602,30 +639,12 @@ TEST(Meshing, UpdatedFloodingEqualsAFreshOne)
     vsa_test::MakeHemisphere(hemisphere, 12, 32);
     for (const TMesh *m : {&square, &hemisphere}) {
         SCOPED_TRACE(m == &square ? "flat square" : "hemisphere");
-        const IndexedMesh im = BuildIndexedMesh(*m);
-        const Partition partition = vsa_test::PartitionByRule(im, 3, [&](int f) {
-            const Point3d c = vsa_test::FaceCentroid(im, f);
-            return c[0] < -0.3 ? 0 : (c[1] < 0.2 ? 1 : 2);
-        });
-        MeshingSurface s;
-        std::string error;
-        ASSERT_TRUE(BuildMeshingSurface(im, partition.faceRegion, 3, s, error)) << error;
-        // Anchor sets that add and drop anchors in turn: the coarse ones, plus loop vertices
-        // picked by a fixed pseudo-random sequence.
-        std::vector<AnchorSet> sets = {SelectAnchors(s, partition.proxies, 0.5)};
-        unsigned state = 12345;
-        for (int step = 0; step < 150; ++step) {
-            std::vector<char> required(s.VertexCount(), 0);
-            for (const std::vector<int> &loop : s.cellLoop)
-                for (int v : loop) {
-                    state = state * 1103515245u + 12345u;
-                    required[v] = (state >> 16) % 7 == 0;
-                }
-            sets.push_back(SelectAnchors(s, partition.proxies, 0.5, required));
-            ASSERT_GT(sets.back().Count(), sets.front().Count());
-        }
+        RepairSequence r;
+        MakeRepairSequence(*m, 150, r);
+        const MeshingSurface &s = r.surface;
         CellFlooding updated(s);
-        for (const AnchorSet &anchors : sets)
+        for (const std::vector<char> &required : r.required) {
+            const AnchorSet anchors = SelectAnchors(s, r.partition.proxies, 0.5, required);
             for (int c = 0; c < s.CellCount(); ++c) {
                 CellFlooding fresh(s);
                 const std::set<std::array<int, 3>> expected = fresh.Triples(c, anchors);
@@ -633,6 +652,28 @@ TEST(Meshing, UpdatedFloodingEqualsAFreshOne)
                 EXPECT_EQ(updated.Triples(c, anchors), expected) << "cell " << c;
                 EXPECT_EQ(updated.VerticesDeepestFirst(c), fresh.VerticesDeepestFirst(c)) << "cell " << c;
             }
+        }
+    }
+}
+
+// Repair passes reuse the chord subdivision of the chains they did not change: the anchors
+// must be those of a subdivision from scratch.
+TEST(Meshing, RememberedChordSubdivisionEqualsAFreshOne)
+{
+    TMesh hemisphere;
+    vsa_test::MakeHemisphere(hemisphere, 12, 32);
+    RepairSequence r;
+    MakeRepairSequence(hemisphere, 20, r);
+    const MeshingSurface &s = r.surface;
+    detail::ChainSubdivision remembered(s, r.partition.proxies, 0.2);
+    const AnchorSet coarse = SelectAnchors(s, r.partition.proxies, 0.2);
+    for (const std::vector<char> &required : r.required) {
+        const AnchorSet expected = SelectAnchors(s, r.partition.proxies, 0.2, required);
+        const AnchorSet anchors = SelectAnchors(s, remembered, required);
+        EXPECT_GT(expected.Count(), required.empty() ? 0 : coarse.Count());
+        EXPECT_GT(expected.chordSplits, 0);
+        EXPECT_EQ(anchors.vertexOfAnchor, expected.vertexOfAnchor);
+        EXPECT_EQ(anchors.chordSplits, expected.chordSplits);
     }
 }
 
@@ -645,7 +686,7 @@ TEST(Meshing, IntersectionsOfTheInputItselfAreNotRepairedWithInputFaces)
     vsa_test::MakeTessellatedCube(cube, 1);
     std::vector<vcg::Point3f> coords;
     std::vector<vcg::Point3i> tris;
-    for (const vcg::Point3f shift : {vcg::Point3f(0, 0, 0), vcg::Point3f(1, 1, 1)}) {
+    for (const vcg::Point3f &shift : {vcg::Point3f(0, 0, 0), vcg::Point3f(1, 1, 1)}) {
         const int first = int(coords.size());
         for (const auto &v : cube.vert) coords.push_back(v.cP() + shift);
         for (const auto &f : cube.face)

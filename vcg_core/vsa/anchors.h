@@ -9,9 +9,12 @@
 #include <vsa/surface_grid.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
+#include <map>
 #include <memory>
+#include <utility>
 #include <vector>
 
 namespace vcg {
@@ -152,35 +155,61 @@ private:
     std::unique_ptr<SurfaceGrid> surface_;
 };
 
-/// Subdivides one chain recursively at its vertex farthest from the chord while
-/// d * weight / |chord| exceeds the threshold (see ChainAngleWeight), or while the chord
-/// strays from the surface (`gap`, when given). A chain from an anchor back to itself is
-/// always split.
-inline int SubdivideChain(const MeshingSurface &s, const std::vector<Proxy> &proxies, const ChainRun &chain,
-                          double threshold, ChordGapTest *gap, std::vector<char> &isAnchor)
+/// The chord subdivision of chains: each chain is split recursively at its vertex farthest
+/// from the chord while d * weight / |chord| exceeds the threshold (see ChainAngleWeight), or
+/// while the chord strays from the surface (the gap test, when given); a chain from an anchor
+/// back to itself is always split. A chain's splits depend on nothing but its cell and loop
+/// positions, so they are remembered: repair passes ask again for every chain they did not
+/// change.
+class ChainSubdivision
 {
-    const std::vector<int> &loop = s.cellLoop[chain.cell];
-    const int m = int(loop.size());
-    const double weight = ChainAngleWeight(s, proxies, chain.cell, s.cellLoopOther[chain.cell][chain.from]);
-    int added = 0;
-    std::vector<std::pair<int, int>> stack = {{chain.from, chain.to}};
-    while (!stack.empty()) {
-        const auto [from, to] = stack.back();
-        stack.pop_back();
-        if (to - from < 2) continue;
-        double distance = 0;
-        const int split = FarthestFromChord(s, chain.cell, from, to, &distance);
-        const Point3d &a = s.positions[loop[from % m]], &b = s.positions[loop[to % m]];
-        const bool closedChain = loop[to % m] == loop[from % m];
-        if (!closedChain && !(distance * weight > threshold * (b - a).Norm()) && !(gap && gap->Strays(a, b, distance)))
-            continue;
-        isAnchor[loop[split % m]] = 1;
-        ++added;
-        stack.push_back({split, to});
-        stack.push_back({from, split});
+public:
+    ChainSubdivision(const MeshingSurface &s, const std::vector<Proxy> &proxies, double threshold,
+                     ChordGapTest *gap = nullptr)
+        : s_(s), proxies_(proxies), threshold_(threshold), gap_(gap)
+    {
     }
-    return added;
-}
+
+    /// Loop positions (of chain.cell's loop, within (chain.from, chain.to)) that get anchors.
+    const std::vector<int> &Splits(const ChainRun &chain)
+    {
+        const auto [it, added] = splits_.try_emplace({chain.cell, chain.from, chain.to});
+        if (added) it->second = Subdivide(chain);
+        return it->second;
+    }
+
+private:
+    const MeshingSurface &s_;
+    const std::vector<Proxy> &proxies_;
+    double threshold_;
+    ChordGapTest *gap_;
+    std::map<std::array<int, 3>, std::vector<int>> splits_;  ///< by (cell, from, to)
+
+    std::vector<int> Subdivide(const ChainRun &chain) const
+    {
+        const std::vector<int> &loop = s_.cellLoop[chain.cell];
+        const int m = int(loop.size());
+        const double weight = ChainAngleWeight(s_, proxies_, chain.cell, s_.cellLoopOther[chain.cell][chain.from]);
+        std::vector<int> splits;
+        std::vector<std::pair<int, int>> stack = {{chain.from, chain.to}};
+        while (!stack.empty()) {
+            const auto [from, to] = stack.back();
+            stack.pop_back();
+            if (to - from < 2) continue;
+            double distance = 0;
+            const int split = FarthestFromChord(s_, chain.cell, from, to, &distance);
+            const Point3d &a = s_.positions[loop[from % m]], &b = s_.positions[loop[to % m]];
+            const bool closedChain = loop[to % m] == loop[from % m];
+            if (!closedChain && !(distance * weight > threshold_ * (b - a).Norm()) &&
+                !(gap_ && gap_->Strays(a, b, distance)))
+                continue;
+            splits.push_back(split);
+            stack.push_back({split, to});
+            stack.push_back({from, split});
+        }
+        return splits;
+    }
+};
 
 /// Completes a loop with fewer than three anchors with farthest vertices: from the single
 /// anchor, then from the line through the two.
@@ -248,14 +277,14 @@ inline int SplitDuplicateChords(const MeshingSurface &s, std::vector<char> &isAn
 ///     i.e. where three cells meet, or two cells meet on the mesh border.
 ///  2. A loop with no junction (an island's shore, a hole, a region's whole border) gets one
 ///     anchor at its vertex farthest from its centroid.
-///  3. Chord subdivision (the paper's criterion, and `gap` when given) on every chain,
-///     recursively.
+///  3. Chord subdivision (`subdivision`: the paper's criterion, and the gap test when it has
+///     one) on every chain, recursively.
 ///  4. Loops with fewer than three anchors are completed with farthest vertices.
 ///  5. Chains joining the same two anchors are split until chords are unique.
-/// 3-5 repeat until nothing changes. `proxies` must have unit normals. `required` (empty,
-/// or one flag per surface vertex) names vertices that must be anchors whatever the rules.
-inline AnchorSet SelectAnchors(const MeshingSurface &s, const std::vector<Proxy> &proxies, double chordThreshold,
-                               const std::vector<char> &required = {}, detail::ChordGapTest *gap = nullptr)
+/// 3-5 repeat until nothing changes. `required` (empty, or one flag per surface vertex) names
+/// vertices that must be anchors whatever the rules.
+inline AnchorSet SelectAnchors(const MeshingSurface &s, detail::ChainSubdivision &subdivision,
+                               const std::vector<char> &required = {})
 {
     AnchorSet result;
     const int vertexCount = s.VertexCount();
@@ -299,8 +328,11 @@ inline AnchorSet SelectAnchors(const MeshingSurface &s, const std::vector<Proxy>
     }
 
     for (bool changed = true; changed;) {
-        for (const detail::ChainRun &chain : detail::CanonicalChains(s, isAnchor))
-            result.chordSplits += detail::SubdivideChain(s, proxies, chain, chordThreshold, gap, isAnchor);
+        for (const detail::ChainRun &chain : detail::CanonicalChains(s, isAnchor)) {
+            const std::vector<int> &splits = subdivision.Splits(chain);
+            for (int split : splits) isAnchor[s.cellLoop[chain.cell][split % int(s.cellLoop[chain.cell].size())]] = 1;
+            result.chordSplits += int(splits.size());
+        }
         int added = 0;
         for (int c = 0; c < s.CellCount(); ++c) added += detail::CompleteLoop(s, c, isAnchor);
         result.loopCompletions += added;
@@ -316,6 +348,15 @@ inline AnchorSet SelectAnchors(const MeshingSurface &s, const std::vector<Proxy>
             result.vertexOfAnchor.push_back(v);
         }
     return result;
+}
+
+/// SelectAnchors with the chord subdivision of `proxies` (unit normals) and `chordThreshold`,
+/// and `gap` when given.
+inline AnchorSet SelectAnchors(const MeshingSurface &s, const std::vector<Proxy> &proxies, double chordThreshold,
+                               const std::vector<char> &required = {}, detail::ChordGapTest *gap = nullptr)
+{
+    detail::ChainSubdivision subdivision(s, proxies, chordThreshold, gap);
+    return SelectAnchors(s, subdivision, required);
 }
 
 /// The anchor polygon of every cell: its anchors in loop order (the cell on the left).

@@ -256,12 +256,12 @@ void KeepInputFaces(const MeshingSurface &s, int c, OutputRegistry &registry, Me
 /// will be written, since a triangle fine in double can be flat in a float mesh.
 template <class CoordType>
 MeshingPass RunMeshingPass(const MeshingSurface &s, const std::vector<Proxy> &proxies, const MeshingParam &param,
-                           ChordGapTest *gap, const std::vector<char> &requiredAnchors,
+                           ChainSubdivision &subdivision, const std::vector<char> &requiredAnchors,
                            const std::vector<char> &pinnedAnchors, const std::vector<char> &inputCells,
                            CellFlooding &flooding, const MeshingPass *previous = nullptr)
 {
     MeshingPass pass;
-    pass.anchors = SelectAnchors(s, proxies, param.chordThreshold, requiredAnchors, gap);
+    pass.anchors = SelectAnchors(s, subdivision, requiredAnchors);
     const AnchorSet &anchors = pass.anchors;
     pass.polygons = CellPolygons(s, anchors);
     pass.polygonAt.resize(s.CellCount());
@@ -561,7 +561,8 @@ MeshingReport BuildApproximatingMesh(const IndexedMesh &in, const Partition &par
     report.splitVertices = s.splitVertices;
     const std::vector<Proxy> proxies = detail::UsableProxies(s, partition.proxies);
     detail::ChordGapTest gapTest(s.positions, s.faces, param.chordGapThreshold);
-    detail::ChordGapTest *gap = param.chordGapThreshold > 0 ? &gapTest : nullptr;
+    detail::ChainSubdivision subdivision(s, proxies, param.chordThreshold,
+                                         param.chordGapThreshold > 0 ? &gapTest : nullptr);
 
     if (cb) cb(20, "VSA meshing: anchors and triangulation");
     // Passes: each one responds to the defects of the previous one (see RespondToDefects);
@@ -570,7 +571,7 @@ MeshingReport BuildApproximatingMesh(const IndexedMesh &in, const Partition &par
     std::vector<char> inputCells(s.CellCount(), 0);
     CellFlooding flooding(s);
     detail::MeshingPass pass =
-        detail::RunMeshingPass<CoordType>(s, proxies, param, gap, requiredAnchors, pinnedAnchors, inputCells, flooding);
+        detail::RunMeshingPass<CoordType>(s, proxies, param, subdivision, requiredAnchors, pinnedAnchors, inputCells, flooding);
     report.passes = 1;
     detail::PassDefects defects;
     if (param.repairRounds > 0) defects = detail::FindDefects(pass);
@@ -582,7 +583,7 @@ MeshingReport BuildApproximatingMesh(const IndexedMesh &in, const Partition &par
         if (cb) cb(20 + 50 * round / (2 * param.repairRounds + 1), "VSA meshing: repairing folds and self-intersections");
         const detail::MeshingPass &previous = round == 1 ? pass : latest;
         if (detail::RespondToDefects(s, previous, defects, requiredAnchors, pinnedAnchors) == 0) break;
-        detail::MeshingPass next = detail::RunMeshingPass<CoordType>(s, proxies, param, gap, requiredAnchors,
+        detail::MeshingPass next = detail::RunMeshingPass<CoordType>(s, proxies, param, subdivision, requiredAnchors,
                                                                      pinnedAnchors, inputCells, flooding, &previous);
         ++report.passes;
         defects = detail::FindDefects(next, &previous, &defects);
@@ -626,7 +627,7 @@ MeshingReport BuildApproximatingMesh(const IndexedMesh &in, const Partition &par
             if (detail::KeepInputFacesOfCells(s, flagged, intersectingInput, requiredAnchors, pinnedAnchors,
                                               inputCells) == 0)
                 break;
-            detail::MeshingPass next = detail::RunMeshingPass<CoordType>(s, proxies, param, gap, requiredAnchors,
+            detail::MeshingPass next = detail::RunMeshingPass<CoordType>(s, proxies, param, subdivision, requiredAnchors,
                                                                          pinnedAnchors, inputCells, flooding, &latest);
             ++report.passes;
             if (double(next.triangles.size()) > faceBudget) break;  // and it only grows
