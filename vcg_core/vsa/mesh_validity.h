@@ -296,21 +296,35 @@ inline std::vector<std::pair<int, int>> SelfIntersectingPairs(const IndexedMesh 
             shape[f] = ShapeOfFace(im, f);
         }
     std::vector<std::pair<int, int>> pairs;
-    const Point3i dim = grid.Dim();
-    for (int z = 0; z < dim[2]; ++z)
-        for (int y = 0; y < dim[1]; ++y)
-            for (int x = 0; x < dim[0]; ++x) {
-                const auto [first, last] = grid.FacesIn(grid.CellIndex(x, y, z));
-                for (const int *i = first; i != last; ++i)
-                    for (const int *j = i + 1; j != last; ++j) {
-                        const int f = *i, g = *j;
-                        if (!fresh.empty() && !fresh[f] && !fresh[g]) continue;
-                        const Point3i firstShared(std::max(lo[f][0], lo[g][0]), std::max(lo[f][1], lo[g][1]),
-                                                  std::max(lo[f][2], lo[g][2]));
-                        if (firstShared != Point3i(x, y, z) || !BoxesTouch(grid.FaceBox(f), grid.FaceBox(g))) continue;
-                        if (FacesIntersect(im, shape, f, g)) pairs.emplace_back(std::min(f, g), std::max(f, g));
+    auto test = [&](int f, int g, const Point3i &cell) {
+        const Point3i firstShared(std::max(lo[f][0], lo[g][0]), std::max(lo[f][1], lo[g][1]),
+                                  std::max(lo[f][2], lo[g][2]));
+        if (firstShared != cell || !BoxesTouch(grid.FaceBox(f), grid.FaceBox(g))) return;
+        if (FacesIntersect(im, shape, f, g)) pairs.emplace_back(std::min(f, g), std::max(f, g));
+    };
+    if (fresh.empty()) {
+        const Point3i dim = grid.Dim();
+        for (int z = 0; z < dim[2]; ++z)
+            for (int y = 0; y < dim[1]; ++y)
+                for (int x = 0; x < dim[0]; ++x) {
+                    const auto [first, last] = grid.FacesIn(grid.CellIndex(x, y, z));
+                    for (const int *i = first; i != last; ++i)
+                        for (const int *j = i + 1; j != last; ++j) test(*i, *j, Point3i(x, y, z));
+                }
+    } else {
+        // Only the cells of fresh faces: a pair of fresh faces from its lower face.
+        for (int f = 0; f < faceCount; ++f) {
+            if (!fresh[f] || degenerate[f]) continue;
+            const Point3i hi = grid.CellOf(grid.FaceBox(f).max);
+            for (int z = lo[f][2]; z <= hi[2]; ++z)
+                for (int y = lo[f][1]; y <= hi[1]; ++y)
+                    for (int x = lo[f][0]; x <= hi[0]; ++x) {
+                        const auto [first, last] = grid.FacesIn(grid.CellIndex(x, y, z));
+                        for (const int *j = first; j != last; ++j)
+                            if (*j != f && (!fresh[*j] || *j > f)) test(std::min(f, *j), std::max(f, *j), Point3i(x, y, z));
                     }
-            }
+        }
+    }
     std::sort(pairs.begin(), pairs.end());
     return pairs;
 }
