@@ -46,6 +46,11 @@ struct MeshingSurface
     /// loop edge loop[i] -> loop[i+1], or -1 where that edge is on the mesh border.
     std::vector<std::vector<int>> cellLoop;
     std::vector<std::vector<int>> cellLoopOther;
+    /// Per cell: the sum of its faces' cross products (twice its area-weighted normal), the sum
+    /// of their norms (twice its area), and the centroid of its faces weighted by their areas.
+    std::vector<Point3d> cellAreaVector;
+    std::vector<double> cellDoubleArea;
+    std::vector<Point3d> cellCentroid;
     int regionCount = 0;
 
     // What was done to the input to make it walkable.
@@ -312,6 +317,25 @@ inline void BuildCells(MeshingSurface &s)
     BuildOffsets(s.faceCell, s.CellCount(), s.cellFaceOffset, s.cellFaces);
 }
 
+/// Fills the cells' area vectors, areas and centroids (see MeshingSurface).
+inline void MeasureCells(MeshingSurface &s)
+{
+    s.cellAreaVector.assign(s.CellCount(), Point3d(0, 0, 0));
+    s.cellDoubleArea.assign(s.CellCount(), 0);
+    s.cellCentroid.assign(s.CellCount(), Point3d(0, 0, 0));
+    for (int c = 0; c < s.CellCount(); ++c) {
+        Point3d centroid(0, 0, 0);
+        for (int k = s.cellFaceOffset[c]; k < s.cellFaceOffset[c + 1]; ++k) {
+            const auto &t = s.faces[s.cellFaces[k]];
+            const Point3d n = (s.positions[t[1]] - s.positions[t[0]]) ^ (s.positions[t[2]] - s.positions[t[0]]);
+            s.cellAreaVector[c] += n;
+            s.cellDoubleArea[c] += n.Norm();
+            centroid += (s.positions[t[0]] + s.positions[t[1]] + s.positions[t[2]]) * (n.Norm() / 3);
+        }
+        s.cellCentroid[c] = centroid / (s.cellDoubleArea[c] > 0 ? s.cellDoubleArea[c] : 1.0);
+    }
+}
+
 inline bool IsCellBoundary(const MeshingSurface &s, int f, int i)
 {
     const int g = s.neighbors[f][i];
@@ -438,6 +462,7 @@ inline bool BuildMeshingSurface(const IndexedMesh &im, const std::vector<int> &f
     for (int &corner : s.vertexFaces) corner /= 3;  // corner index -> face index
 
     detail::BuildCells(s);
+    detail::MeasureCells(s);
     return detail::TraceCellLoops(s, error);
 }
 

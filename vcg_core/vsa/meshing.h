@@ -236,7 +236,6 @@ void KeepInputFaces(const MeshingSurface &s, int c, OutputRegistry &registry, Me
         }
         return it->second;
     };
-    Point3d normal(0, 0, 0);
     pass.cellTriangles[c].first = int(pass.triangles.size());
     for (int k = s.cellFaceOffset[c]; k < s.cellFaceOffset[c + 1]; ++k) {
         const auto &f = s.faces[s.cellFaces[k]];
@@ -244,10 +243,10 @@ void KeepInputFaces(const MeshingSurface &s, int c, OutputRegistry &registry, Me
         registry.AddFace(t);
         pass.triangles.push_back(t);
         pass.triangleCell.push_back(c);
-        normal += (s.positions[f[1]] - s.positions[f[0]]) ^ (s.positions[f[2]] - s.positions[f[0]]);
     }
     pass.cellTriangles[c].second = int(pass.triangles.size());
     pass.cellMethod[c] = CellMethod::InputFaces;
+    const Point3d &normal = s.cellAreaVector[c];
     pass.cellNormal[c] = normal.Norm() > 0 ? normal / normal.Norm() : Point3d(0, 0, 1);
 }
 

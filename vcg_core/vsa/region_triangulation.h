@@ -445,17 +445,8 @@ inline CellTriangulation TriangulateCell(const MeshingSurface &s, int c, const s
     // The plane to clip on: the cell's own area-weighted normal, which follows the input's
     // orientation (an L2 proxy normal may point either way); the proxy's if the cell folds
     // back onto itself so much that its normals cancel out.
-    Point3d normal(0, 0, 0);
-    double area = 0;
-    Point3d centroid(0, 0, 0);
-    for (int k = s.cellFaceOffset[c]; k < s.cellFaceOffset[c + 1]; ++k) {
-        const auto &t = s.faces[s.cellFaces[k]];
-        const Point3d n = (s.positions[t[1]] - s.positions[t[0]]) ^ (s.positions[t[2]] - s.positions[t[0]]);
-        normal += n;
-        area += n.Norm();
-        centroid += (s.positions[t[0]] + s.positions[t[1]] + s.positions[t[2]]) * (n.Norm() / 3);
-    }
-    if (normal.Norm() > 1e-6 * area) normal.Normalize();
+    Point3d normal = s.cellAreaVector[c];
+    if (normal.Norm() > 1e-6 * s.cellDoubleArea[c]) normal.Normalize();
     else normal = proxy.normal * (proxy.normal * normal < 0 ? -1.0 : 1.0);
     result.planeNormal = normal;
 
@@ -489,10 +480,9 @@ inline CellTriangulation TriangulateCell(const MeshingSurface &s, int c, const s
             }
             if (bestQuality >= detail::kGoodFan) break;
         }
-        const Point3d cellCentroid = centroid / (area > 0 ? area : 1.0);
-        if (fanQuality(cellCentroid) > bestQuality) {
+        if (fanQuality(s.cellCentroid[c]) > bestQuality) {
             result.steinerSourceVertex = -1;
-            result.steinerPosition = cellCentroid;
+            result.steinerPosition = s.cellCentroid[c];
         }
         for (size_t k = 0; k < polygon.size(); ++k)
             result.triangles.push_back({polygon[k], polygon[(k + 1) % polygon.size()], nextVertex});
