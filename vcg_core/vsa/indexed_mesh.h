@@ -103,17 +103,28 @@ inline void LinkFaces(IndexedMesh &im, MeshDiagnostics &diag)
 {
     const int faceCount = im.FaceCount();
     struct HalfEdge { uint64_t key; int faceEdge; };
-    std::vector<HalfEdge> edges;
-    edges.reserve(size_t(faceCount) * 3);
-    for (int f = 0; f < faceCount; ++f)
-        for (int i = 0; i < 3; ++i) {
-            uint64_t a = uint32_t(im.faces[f][i]), b = uint32_t(im.faces[f][(i + 1) % 3]);
-            if (a == b) continue;  // an edge of a degenerate face joins nothing
-            edges.push_back({(std::min(a, b) << 32) | std::max(a, b), 3 * f + i});
-        }
-    std::sort(edges.begin(), edges.end(), [](const HalfEdge &x, const HalfEdge &y) {
-        return x.key != y.key ? x.key < y.key : x.faceEdge < y.faceEdge;
+    // Sorted by (key, faceEdge): bucketed by lower vertex first (in faceEdge order), then each
+    // small bucket sorted, which costs a fraction of one sort of all of them.
+    std::vector<int> bucketOffset(im.positions.size() + 1, 0);
+    auto forEachHalfEdge = [&](auto visit) {
+        for (int f = 0; f < faceCount; ++f)
+            for (int i = 0; i < 3; ++i) {
+                const int a = im.faces[f][i], b = im.faces[f][(i + 1) % 3];
+                if (a != b) visit(std::min(a, b), std::max(a, b), 3 * f + i);  // a degenerate edge joins nothing
+            }
+    };
+    forEachHalfEdge([&](int low, int, int) { ++bucketOffset[size_t(low) + 1]; });
+    std::partial_sum(bucketOffset.begin(), bucketOffset.end(), bucketOffset.begin());
+    std::vector<HalfEdge> edges(bucketOffset.back());
+    std::vector<int> fill(bucketOffset.begin(), bucketOffset.end() - 1);
+    forEachHalfEdge([&](int low, int high, int faceEdge) {
+        edges[fill[low]++] = {(uint64_t(uint32_t(low)) << 32) | uint32_t(high), faceEdge};
     });
+    for (size_t v = 0; v + 1 < bucketOffset.size(); ++v)
+        std::sort(edges.begin() + bucketOffset[v], edges.begin() + bucketOffset[v + 1],
+                  [](const HalfEdge &x, const HalfEdge &y) {
+                      return x.key != y.key ? x.key < y.key : x.faceEdge < y.faceEdge;
+                  });
     im.neighbors.assign(faceCount, {-1, -1, -1});
     for (size_t lo = 0; lo < edges.size();) {
         size_t hi = lo + 1;
