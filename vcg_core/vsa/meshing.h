@@ -129,13 +129,11 @@ inline std::vector<Proxy> UsableProxies(const MeshingSurface &s, const std::vect
     std::vector<Proxy> proxies(given);
     std::vector<Point3d> normalSum(given.size(), Point3d(0, 0, 0)), centroidSum(given.size(), Point3d(0, 0, 0));
     std::vector<double> areaSum(given.size(), 0);
-    for (int f = 0; f < s.FaceCount(); ++f) {
-        const auto &t = s.faces[f];
-        const Point3d n = (s.positions[t[1]] - s.positions[t[0]]) ^ (s.positions[t[2]] - s.positions[t[0]]);
-        const int r = s.faceRegion[f];
-        normalSum[r] += n;
-        areaSum[r] += n.Norm();
-        centroidSum[r] += (s.positions[t[0]] + s.positions[t[1]] + s.positions[t[2]]) * (n.Norm() / 3);
+    for (int c = 0; c < s.CellCount(); ++c) {
+        const int r = s.cellRegion[c];
+        normalSum[r] += s.cellAreaVector[c];
+        areaSum[r] += s.cellDoubleArea[c];
+        centroidSum[r] += s.cellCentroid[c] * s.cellDoubleArea[c];
     }
     auto finite = [](const Point3d &p) { return std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]); };
     for (size_t r = 0; r < proxies.size(); ++r) {
