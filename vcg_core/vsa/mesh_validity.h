@@ -321,7 +321,8 @@ inline std::vector<std::pair<int, int>> SelfIntersectingPairs(const IndexedMesh 
                     for (int x = lo[f][0]; x <= hi[0]; ++x) {
                         const auto [first, last] = grid.FacesIn(grid.CellIndex(x, y, z));
                         for (const int *j = first; j != last; ++j)
-                            if (*j != f && (!fresh[*j] || *j > f)) test(std::min(f, *j), std::max(f, *j), Point3i(x, y, z));
+                            if (*j != f && (!fresh[*j] || *j > f))
+                                test(std::min(f, *j), std::max(f, *j), Point3i(x, y, z));
                     }
         }
     }

@@ -578,7 +578,8 @@ MeshingReport BuildApproximatingMesh(const IndexedMesh &in, const Partition &par
     std::vector<char> inputCells(s.CellCount(), 0);
     CellFlooding flooding(s);
     detail::MeshingPass pass =
-        detail::RunMeshingPass<CoordType>(s, proxies, param, subdivision, requiredAnchors, pinnedAnchors, inputCells, flooding);
+        detail::RunMeshingPass<CoordType>(s, proxies, param, subdivision, requiredAnchors, pinnedAnchors, inputCells,
+                                          flooding);
     report.passes = 1;
     detail::PassDefects defects;
     if (param.repairRounds > 0) defects = detail::FindDefects(pass);
@@ -637,8 +638,8 @@ MeshingReport BuildApproximatingMesh(const IndexedMesh &in, const Partition &par
             if (detail::KeepInputFacesOfCells(s, flagged, intersectingInput, requiredAnchors, pinnedAnchors,
                                               inputCells) == 0)
                 break;
-            detail::MeshingPass next = detail::RunMeshingPass<CoordType>(s, proxies, param, subdivision, requiredAnchors,
-                                                                         pinnedAnchors, inputCells, flooding, &latest);
+            detail::MeshingPass next = detail::RunMeshingPass<CoordType>(
+                s, proxies, param, subdivision, requiredAnchors, pinnedAnchors, inputCells, flooding, &latest);
             ++report.passes;
             if (double(next.triangles.size()) > faceBudget) break;  // and it only grows
             defects = detail::FindDefects(next, &latest, &defects);
