@@ -74,18 +74,6 @@ inline int TwinEdge(const MeshingSurface &s, int f, int i)
     return -1;
 }
 
-/// Compressed lists: items of key k are list[offset[k] .. offset[k+1]).
-inline void BuildOffsets(const std::vector<int> &keyOfItem, int keyCount, std::vector<int> &offset,
-                         std::vector<int> &list)
-{
-    offset.assign(size_t(keyCount) + 1, 0);
-    for (int k : keyOfItem) ++offset[size_t(k) + 1];
-    std::partial_sum(offset.begin(), offset.end(), offset.begin());
-    list.resize(keyOfItem.size());
-    std::vector<int> fill(offset.begin(), offset.end() - 1);
-    for (size_t item = 0; item < keyOfItem.size(); ++item) list[fill[keyOfItem[item]]++] = int(item);
-}
-
 /// Gives every fan of faces around a vertex its own vertex, so that each vertex has one fan
 /// (a disc, or a half-disc on the border). Corners are joined across linked edges.
 inline void SplitVerticesPerFan(MeshingSurface &s)

@@ -97,29 +97,45 @@ inline void Unite(std::vector<int> &parent, int a, int b)
     if (a != b) parent[std::max(a, b)] = std::min(a, b);  // smallest root: deterministic
 }
 
+/// Compressed lists, a counting sort: items of key k are list[offset[k] .. offset[k+1]), in
+/// increasing order; items with a negative key are left out.
+inline void BuildOffsets(const std::vector<int> &keyOfItem, int keyCount, std::vector<int> &offset,
+                         std::vector<int> &list)
+{
+    offset.assign(size_t(keyCount) + 1, 0);
+    for (int k : keyOfItem)
+        if (k >= 0) ++offset[size_t(k) + 1];
+    std::partial_sum(offset.begin(), offset.end(), offset.begin());
+    list.resize(size_t(offset.back()));
+    std::vector<int> fill(offset.begin(), offset.end() - 1);
+    for (size_t item = 0; item < keyOfItem.size(); ++item)
+        if (keyOfItem[item] >= 0) list[fill[keyOfItem[item]]++] = int(item);
+}
+
 /// Pairs up the edges of the faces: fills `neighbors` and counts border, non-manifold and
 /// inconsistently oriented edges. Works on vertex indices only.
 inline void LinkFaces(IndexedMesh &im, MeshDiagnostics &diag)
 {
     const int faceCount = im.FaceCount();
     struct HalfEdge { uint64_t key; int faceEdge; };
+    std::vector<HalfEdge> halfEdges;
+    std::vector<int> lowerVertex;
+    halfEdges.reserve(size_t(faceCount) * 3);
+    lowerVertex.reserve(size_t(faceCount) * 3);
+    for (int f = 0; f < faceCount; ++f)
+        for (int i = 0; i < 3; ++i) {
+            const int a = im.faces[f][i], b = im.faces[f][(i + 1) % 3];
+            if (a == b) continue;  // an edge of a degenerate face joins nothing
+            halfEdges.push_back({(uint64_t(uint32_t(std::min(a, b))) << 32) | uint32_t(std::max(a, b)), 3 * f + i});
+            lowerVertex.push_back(std::min(a, b));
+        }
     // Sorted by (key, faceEdge): bucketed by lower vertex first (in faceEdge order), then each
     // small bucket sorted, which costs a fraction of one sort of all of them.
-    std::vector<int> bucketOffset(im.positions.size() + 1, 0);
-    auto forEachHalfEdge = [&](auto visit) {
-        for (int f = 0; f < faceCount; ++f)
-            for (int i = 0; i < 3; ++i) {
-                const int a = im.faces[f][i], b = im.faces[f][(i + 1) % 3];
-                if (a != b) visit(std::min(a, b), std::max(a, b), 3 * f + i);  // a degenerate edge joins nothing
-            }
-    };
-    forEachHalfEdge([&](int low, int, int) { ++bucketOffset[size_t(low) + 1]; });
-    std::partial_sum(bucketOffset.begin(), bucketOffset.end(), bucketOffset.begin());
-    std::vector<HalfEdge> edges(bucketOffset.back());
-    std::vector<int> fill(bucketOffset.begin(), bucketOffset.end() - 1);
-    forEachHalfEdge([&](int low, int high, int faceEdge) {
-        edges[fill[low]++] = {(uint64_t(uint32_t(low)) << 32) | uint32_t(high), faceEdge};
-    });
+    std::vector<int> bucketOffset, order;
+    BuildOffsets(lowerVertex, im.VertexCount(), bucketOffset, order);
+    std::vector<HalfEdge> edges;
+    edges.reserve(order.size());
+    for (int e : order) edges.push_back(halfEdges[e]);
     for (size_t v = 0; v + 1 < bucketOffset.size(); ++v)
         std::sort(edges.begin() + bucketOffset[v], edges.begin() + bucketOffset[v + 1],
                   [](const HalfEdge &x, const HalfEdge &y) {

@@ -277,16 +277,16 @@ inline std::vector<char> DegenerateFaceMask(const IndexedMesh &im)
     return degenerate;
 }
 
-/// Pairs (f < g) of non-degenerate faces that intersect beyond their shared corners, sorted;
-/// only pairs with a face flagged in `fresh` when it is not empty (the pairs of the other
-/// faces are known). Needs only `faces` and `positions`. Faces go in a SurfaceGrid; a pair is
-/// tested in the one grid cell holding the minimum corner of the overlap of their boxes, so
-/// each pair is tested at most once.
-inline std::vector<std::pair<int, int>> SelfIntersectingPairs(const IndexedMesh &im,
-                                                              const std::vector<char> &fresh = {})
+/// Pairs (f < g) of faces not flagged in `degenerate` (DegenerateFaceMask) that intersect
+/// beyond their shared corners, sorted; only pairs with a face flagged in `fresh` when it is
+/// not empty (the pairs of the other faces are known). Needs only `faces` and `positions`.
+/// Faces go in a SurfaceGrid, and each fresh face meets the faces of its grid cells there; a
+/// pair is tested in the one cell holding the minimum corner of the overlap of their boxes,
+/// and from its lower face when both are fresh, so at most once.
+inline std::vector<std::pair<int, int>> SelfIntersectingPairs(const IndexedMesh &im, const std::vector<char> &degenerate,
+                                                              const std::vector<char> &fresh)
 {
     const int faceCount = im.FaceCount();
-    const std::vector<char> degenerate = DegenerateFaceMask(im);
     const SurfaceGrid grid(im.positions, im.faces, degenerate);
     std::vector<Point3i> lo(faceCount);
     std::vector<FaceShape> shape(faceCount);
@@ -295,39 +295,36 @@ inline std::vector<std::pair<int, int>> SelfIntersectingPairs(const IndexedMesh 
             lo[f] = grid.CellOf(grid.FaceBox(f).min);
             shape[f] = ShapeOfFace(im, f);
         }
+    auto isFresh = [&](int f) { return fresh.empty() || fresh[f]; };
     std::vector<std::pair<int, int>> pairs;
-    auto test = [&](int f, int g, const Point3i &cell) {
-        const Point3i firstShared(std::max(lo[f][0], lo[g][0]), std::max(lo[f][1], lo[g][1]),
-                                  std::max(lo[f][2], lo[g][2]));
-        if (firstShared != cell || !BoxesTouch(grid.FaceBox(f), grid.FaceBox(g))) return;
-        if (FacesIntersect(im, shape, f, g)) pairs.emplace_back(std::min(f, g), std::max(f, g));
-    };
-    if (fresh.empty()) {
-        const Point3i dim = grid.Dim();
-        for (int z = 0; z < dim[2]; ++z)
-            for (int y = 0; y < dim[1]; ++y)
-                for (int x = 0; x < dim[0]; ++x) {
+    for (int f = 0; f < faceCount; ++f) {
+        if (degenerate[f] || !isFresh(f)) continue;
+        const Point3i hi = grid.CellOf(grid.FaceBox(f).max);
+        for (int z = lo[f][2]; z <= hi[2]; ++z)
+            for (int y = lo[f][1]; y <= hi[1]; ++y)
+                for (int x = lo[f][0]; x <= hi[0]; ++x) {
                     const auto [first, last] = grid.FacesIn(grid.CellIndex(x, y, z));
-                    for (const int *i = first; i != last; ++i)
-                        for (const int *j = i + 1; j != last; ++j) test(*i, *j, Point3i(x, y, z));
-                }
-    } else {
-        // Only the cells of fresh faces: a pair of fresh faces from its lower face.
-        for (int f = 0; f < faceCount; ++f) {
-            if (!fresh[f] || degenerate[f]) continue;
-            const Point3i hi = grid.CellOf(grid.FaceBox(f).max);
-            for (int z = lo[f][2]; z <= hi[2]; ++z)
-                for (int y = lo[f][1]; y <= hi[1]; ++y)
-                    for (int x = lo[f][0]; x <= hi[0]; ++x) {
-                        const auto [first, last] = grid.FacesIn(grid.CellIndex(x, y, z));
-                        for (const int *j = first; j != last; ++j)
-                            if (*j != f && (!fresh[*j] || *j > f))
-                                test(std::min(f, *j), std::max(f, *j), Point3i(x, y, z));
+                    for (const int *other = first; other != last; ++other) {
+                        const int g = *other;
+                        if (g == f || (g < f && isFresh(g))) continue;
+                        const Point3i firstShared(std::max(lo[f][0], lo[g][0]), std::max(lo[f][1], lo[g][1]),
+                                                  std::max(lo[f][2], lo[g][2]));
+                        if (firstShared != Point3i(x, y, z) || !BoxesTouch(grid.FaceBox(f), grid.FaceBox(g)))
+                            continue;
+                        const int low = std::min(f, g), high = std::max(f, g);
+                        if (FacesIntersect(im, shape, low, high)) pairs.emplace_back(low, high);
                     }
-        }
+                }
     }
     std::sort(pairs.begin(), pairs.end());
     return pairs;
+}
+
+/// SelfIntersectingPairs with the degenerate faces of `im` found here.
+inline std::vector<std::pair<int, int>> SelfIntersectingPairs(const IndexedMesh &im,
+                                                              const std::vector<char> &fresh = {})
+{
+    return SelfIntersectingPairs(im, DegenerateFaceMask(im), fresh);
 }
 
 }  // namespace detail

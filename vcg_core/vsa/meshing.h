@@ -388,12 +388,12 @@ inline PassDefects FindDefects(const MeshingPass &pass, const MeshingPass *previ
             fresh[f] = repeats[f] < 0;
             if (repeats[f] >= 0) repeatOf[repeats[f]] = int(f);
         }
-        defects.intersections = SelfIntersectingPairs(output, fresh);
+        defects.intersections = SelfIntersectingPairs(output, defects.degenerate, fresh);
         for (const auto &[f, g] : previousDefects->intersections)
             if (repeatOf[f] >= 0 && repeatOf[g] >= 0) defects.intersections.emplace_back(repeatOf[f], repeatOf[g]);
         std::sort(defects.intersections.begin(), defects.intersections.end());
     } else {
-        defects.intersections = SelfIntersectingPairs(output);
+        defects.intersections = SelfIntersectingPairs(output, defects.degenerate, {});
     }
     for (int c = 0; c < int(pass.polygons.size()); ++c)
         if (pass.cellMethod[c] != CellMethod::InputFaces)  // its own faces: nothing folds

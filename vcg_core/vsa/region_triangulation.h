@@ -124,14 +124,7 @@ public:
                 interiorOf_[v] = s.faceCell[s.vertexFaces[k]];
         for (const std::vector<int> &loop : s.cellLoop)
             for (int v : loop) interiorOf_[v] = -1;
-        interiorOffset_.assign(size_t(s.CellCount()) + 1, 0);
-        for (int v = 0; v < vertexCount; ++v)
-            if (interiorOf_[v] >= 0) ++interiorOffset_[interiorOf_[v] + 1];
-        std::partial_sum(interiorOffset_.begin(), interiorOffset_.end(), interiorOffset_.begin());
-        interior_.resize(interiorOffset_.back());
-        fill.assign(interiorOffset_.begin(), interiorOffset_.end() - 1);
-        for (int v = 0; v < vertexCount; ++v)
-            if (interiorOf_[v] >= 0) interior_[fill[interiorOf_[v]]++] = v;
+        detail::BuildOffsets(interiorOf_, s.CellCount(), interiorOffset_, interior_);
     }
 
     /// Sorted anchor triples of the three-coloured faces of cell c.

@@ -58,7 +58,6 @@ public:
         ForEachCellOfFaces([&](size_t cell, int f) { cellFaces_[filled[cell]++] = f; });
     }
 
-    Point3i Dim() const { return dim_; }
     /// The cell holding p (clamped to the grid).
     Point3i CellOf(const Point3d &p) const
     {
