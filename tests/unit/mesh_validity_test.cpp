@@ -1,3 +1,4 @@
+#include "meshing_test_util.h"
 #include "test_meshes.h"
 
 #include <vsa/mesh_validity.h>
@@ -178,4 +179,26 @@ TEST(MeshValidity, WorksOnABareDoubleMeshAndCanSkipIntersections)
     v = CheckMeshValidity(empty);
     EXPECT_EQ(v.faces, 0);
     EXPECT_EQ(v.selfIntersections, 0);
+}
+
+TEST(MeshValidity, GridFindsTheSamePairsAsTestingEveryPair)
+{
+    // Big slanted faces among small ones: the grid must offer every pair that meets, and
+    // with a fresh mask every such pair with a fresh face, each once.
+    const IndexedMesh soup = vsa_test::RandomTriangleSoup(60, 600, 5);
+    const std::vector<char> degenerate = detail::DegenerateFaceMask(soup);
+    std::vector<detail::FaceShape> shape(soup.FaceCount());
+    for (int f = 0; f < soup.FaceCount(); ++f) shape[f] = detail::ShapeOfFace(soup, f);
+    std::vector<char> fresh(soup.FaceCount(), 0);
+    for (int f = 0; f < soup.FaceCount(); f += 3) fresh[f] = 1;
+    std::vector<std::pair<int, int>> all, withFresh;
+    for (int f = 0; f < soup.FaceCount(); ++f)
+        for (int g = f + 1; g < soup.FaceCount(); ++g)
+            if (!degenerate[f] && !degenerate[g] && detail::FacesIntersect(soup, shape, f, g)) {
+                all.emplace_back(f, g);
+                if (fresh[f] || fresh[g]) withFresh.emplace_back(f, g);
+            }
+    ASSERT_GT(withFresh.size(), 100u);
+    EXPECT_EQ(detail::SelfIntersectingPairs(soup, degenerate, {}), all);
+    EXPECT_EQ(detail::SelfIntersectingPairs(soup, degenerate, fresh), withFresh);
 }

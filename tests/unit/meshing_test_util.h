@@ -12,6 +12,7 @@
 #include <cmath>
 #include <functional>
 #include <limits>
+#include <random>
 #include <set>
 #include <vector>
 
@@ -102,6 +103,27 @@ inline double MaxDistanceToSurface(const std::vector<Point3d> &points, const vcg
         worst = std::max(worst, best);
     }
     return worst;
+}
+
+/// Random triangles in the unit cube, `big` of them spanning much of it at any slant and
+/// `small` ones about 1/50 across: the small ones make a SurfaceGrid fine, so the big ones
+/// cross many of its cells. Some share corners, so every FacesIntersect case occurs.
+inline vcg::tri::vsa::IndexedMesh RandomTriangleSoup(int big, int small, unsigned seed)
+{
+    std::mt19937 random(seed);
+    std::uniform_real_distribution<double> unit(0, 1);
+    auto point = [&] { return Point3d(unit(random), unit(random), unit(random)); };
+    vcg::tri::vsa::IndexedMesh soup;
+    for (int f = 0; f < big + small; ++f) {
+        const int n = int(soup.positions.size());
+        // Every fifth face reuses a corner of the one before.
+        const int first = f % 5 == 4 ? n - 1 : n;
+        if (first == n) soup.positions.push_back(point());
+        const Point3d &a = soup.positions[first];
+        for (int i = 0; i < 2; ++i) soup.positions.push_back(f < big ? point() : a + (point() - Point3d(0.5, 0.5, 0.5)) * 0.04);
+        soup.faces.push_back({first, int(soup.positions.size()) - 2, int(soup.positions.size()) - 1});
+    }
+    return soup;
 }
 
 inline double SurfaceArea(const vcg::tri::vsa::IndexedMesh &mesh)

@@ -55,6 +55,12 @@ TEST(SurfaceGrid, MatchesBruteForceOnAFlatMesh)
     ExpectMatchesBruteForce(BuildIndexedMesh(square), 3000);
 }
 
+TEST(SurfaceGrid, MatchesBruteForceAmongBigSlantedFaces)
+{
+    // Big faces are bucketed only in the cells their plane crosses: none may be missed.
+    ExpectMatchesBruteForce(vsa_test::RandomTriangleSoup(40, 400, 3), 3000);
+}
+
 TEST(SurfaceGrid, EmptyMeshHasNothingNear)
 {
     const IndexedMesh empty;

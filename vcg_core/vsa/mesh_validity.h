@@ -208,6 +208,12 @@ inline bool FacesIntersect(const IndexedMesh &im, const std::vector<FaceShape> &
 
     if (shared == 0) {
         const double onPlane = 1e-12 * longest;
+        // Most pairs a grid offers lie with one face wholly on one side of the other's plane.
+        auto oneSide = [onPlane](const double *h) {
+            return (h[0] > onPlane && h[1] > onPlane && h[2] > onPlane) ||
+                   (h[0] < -onPlane && h[1] < -onPlane && h[2] < -onPlane);
+        };
+        if (oneSide(overF) || oneSide(overG)) return false;
         bool coplanar = true;
         for (int j = 0; j < 3; ++j) coplanar &= std::abs(overF[j]) <= onPlane;
         if (!coplanar) {
@@ -280,41 +286,32 @@ inline std::vector<char> DegenerateFaceMask(const IndexedMesh &im)
 /// Pairs (f < g) of faces not flagged in `degenerate` (DegenerateFaceMask) that intersect
 /// beyond their shared corners, sorted; only pairs with a face flagged in `fresh` when it is
 /// not empty (the pairs of the other faces are known). Needs only `faces` and `positions`.
-/// Faces go in a SurfaceGrid, and each fresh face meets the faces of its grid cells there; a
-/// pair is tested in the one cell holding the minimum corner of the overlap of their boxes,
-/// and from its lower face when both are fresh, so at most once.
+/// Faces go in a SurfaceGrid, and each fresh face meets the faces of its grid cells there,
+/// each once; a pair of fresh faces is tested from its lower face only.
 inline std::vector<std::pair<int, int>> SelfIntersectingPairs(const IndexedMesh &im, const std::vector<char> &degenerate,
                                                               const std::vector<char> &fresh)
 {
     const int faceCount = im.FaceCount();
     const SurfaceGrid grid(im.positions, im.faces, degenerate);
-    std::vector<Point3i> lo(faceCount);
     std::vector<FaceShape> shape(faceCount);
     for (int f = 0; f < faceCount; ++f)
-        if (!degenerate[f]) {
-            lo[f] = grid.CellOf(grid.FaceBox(f).min);
-            shape[f] = ShapeOfFace(im, f);
-        }
+        if (!degenerate[f]) shape[f] = ShapeOfFace(im, f);
     auto isFresh = [&](int f) { return fresh.empty() || fresh[f]; };
+    std::vector<int> metFrom(faceCount, -1);  // the last fresh face that met this one
     std::vector<std::pair<int, int>> pairs;
     for (int f = 0; f < faceCount; ++f) {
         if (degenerate[f] || !isFresh(f)) continue;
-        const Point3i hi = grid.CellOf(grid.FaceBox(f).max);
-        for (int z = lo[f][2]; z <= hi[2]; ++z)
-            for (int y = lo[f][1]; y <= hi[1]; ++y)
-                for (int x = lo[f][0]; x <= hi[0]; ++x) {
-                    const auto [first, last] = grid.FacesIn(grid.CellIndex(x, y, z));
-                    for (const int *other = first; other != last; ++other) {
-                        const int g = *other;
-                        if (g == f || (g < f && isFresh(g))) continue;
-                        const Point3i firstShared(std::max(lo[f][0], lo[g][0]), std::max(lo[f][1], lo[g][1]),
-                                                  std::max(lo[f][2], lo[g][2]));
-                        if (firstShared != Point3i(x, y, z) || !BoxesTouch(grid.FaceBox(f), grid.FaceBox(g)))
-                            continue;
-                        const int low = std::min(f, g), high = std::max(f, g);
-                        if (FacesIntersect(im, shape, low, high)) pairs.emplace_back(low, high);
-                    }
-                }
+        grid.ForEachCellOfFace(f, [&](size_t cell) {
+            const auto [first, last] = grid.FacesIn(cell);
+            for (const int *other = first; other != last; ++other) {
+                const int g = *other;
+                if (g == f || (g < f && isFresh(g)) || metFrom[g] == f) continue;
+                metFrom[g] = f;
+                if (!BoxesTouch(grid.FaceBox(f), grid.FaceBox(g))) continue;
+                const int low = std::min(f, g), high = std::max(f, g);
+                if (FacesIntersect(im, shape, low, high)) pairs.emplace_back(low, high);
+            }
+        });
     }
     std::sort(pairs.begin(), pairs.end());
     return pairs;

@@ -51,11 +51,41 @@ public:
             cellSize_[i] = box_.Dim()[i] / dim_[i];
         }
         cellOffset_.assign(size_t(dim_[0]) * dim_[1] * dim_[2] + 1, 0);
-        ForEachCellOfFaces([&](size_t cell, int) { ++cellOffset_[cell + 1]; });
+        for (int f = 0; f < int(faces.size()); ++f) ForEachCellOfFace(f, [&](size_t cell) { ++cellOffset_[cell + 1]; });
         for (size_t i = 1; i < cellOffset_.size(); ++i) cellOffset_[i] += cellOffset_[i - 1];
         cellFaces_.resize(cellOffset_.back());
         std::vector<int> filled(cellOffset_.begin(), cellOffset_.end() - 1);
-        ForEachCellOfFaces([&](size_t cell, int f) { cellFaces_[filled[cell]++] = f; });
+        for (int f = 0; f < int(faces.size()); ++f) ForEachCellOfFace(f, [&](size_t cell) { cellFaces_[filled[cell]++] = f; });
+    }
+
+    /// Calls visit(cell index) for each cell face f is in: the cells of its box that its plane
+    /// crosses (a big slanted face crosses far fewer than its box holds). None for a skipped face.
+    template <class Visit>
+    void ForEachCellOfFace(int f, Visit visit) const
+    {
+        if (faceBox_[f].IsNull()) return;
+        const Point3i lo = CellOf(faceBox_[f].min), hi = CellOf(faceBox_[f].max);
+        // A small box has few cells to spare: not worth the test.
+        const bool testPlane = (hi[0] - lo[0] + 1) * (hi[1] - lo[1] + 1) * (hi[2] - lo[2] + 1) > 8;
+        const Point3d &corner = positions_[faces_[f][0]];
+        Point3d n(0, 0, 0);
+        double reach = 0;
+        if (testPlane) {
+            const Point3d e1 = positions_[faces_[f][1]] - corner, e2 = positions_[faces_[f][2]] - corner;
+            n = e1 ^ e2;
+            // Half the cell's extent along n, with room for rounding (of n too, which is all
+            // rounding on a sliver): never miss a cell the face touches.
+            reach = (std::abs(n[0]) * cellSize_[0] + std::abs(n[1]) * cellSize_[1] + std::abs(n[2]) * cellSize_[2]) *
+                        (0.5 + 1e-6) +
+                    1e-10 * e1.Norm() * e2.Norm() * box_.Diag();
+        }
+        for (int z = lo[2]; z <= hi[2]; ++z)
+            for (int y = lo[1]; y <= hi[1]; ++y)
+                for (int x = lo[0]; x <= hi[0]; ++x) {
+                    const Point3d center = box_.min + Point3d((x + 0.5) * cellSize_[0], (y + 0.5) * cellSize_[1],
+                                                              (z + 0.5) * cellSize_[2]);
+                    if (!testPlane || std::abs(n * (center - corner)) <= reach) visit(CellIndex(x, y, z));
+                }
     }
 
     /// The cell holding p (clamped to the grid).
@@ -97,18 +127,6 @@ public:
     }
 
 private:
-    template <class Visit>
-    void ForEachCellOfFaces(Visit visit) const
-    {
-        for (int f = 0; f < int(faces_.size()); ++f) {
-            if (faceBox_[f].IsNull()) continue;  // skipped
-            const Point3i lo = CellOf(faceBox_[f].min), hi = CellOf(faceBox_[f].max);
-            for (int z = lo[2]; z <= hi[2]; ++z)
-                for (int y = lo[1]; y <= hi[1]; ++y)
-                    for (int x = lo[0]; x <= hi[0]; ++x) visit(CellIndex(x, y, z), f);
-        }
-    }
-
     bool CellHasFaceWithin(size_t cell, const Point3d &p, double radius, const Box3d &query) const
     {
         const auto [first, last] = FacesIn(cell);
