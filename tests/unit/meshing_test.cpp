@@ -709,3 +709,33 @@ TEST(Meshing, IntersectionsOfTheInputItselfAreNotRepairedWithInputFaces)
     // The first pass and a repair round that pins the anchors; no pass keeping input faces.
     EXPECT_EQ(run.report.passes, 2);
 }
+
+TEST(Meshing, CrossingPolygonEdgesAreThoseOfTestingEveryPair)
+{
+    // Random polygons on a slanted plane, many of them self-crossing, on a coarse lattice so
+    // that edges share x ranges, touch and overlap exactly: the sweep must report what
+    // testing every pair of non-neighbouring edges does, in the same order.
+    std::mt19937 random(11);
+    const Point3d normal = Point3d(1, 2, 3).Normalize();
+    const Point3d u = (Point3d(1, 0, 0) - normal * normal[0]).Normalize(), v = normal ^ u;
+    size_t crossingsSeen = 0;
+    for (int trial = 0; trial < 300; ++trial) {
+        const int n = 3 + int(random() % 40);
+        std::vector<Point3d> positions;
+        std::vector<int> polygon;
+        for (int i = 0; i < n; ++i) {
+            positions.push_back(u * double(random() % 8) + v * double(random() % 8));
+            polygon.push_back(i);
+        }
+        const std::vector<vcg::Point2d> plane = detail::PolygonOnPlane(polygon, positions, normal);
+        std::vector<std::pair<int, int>> expected;
+        for (int i = 0; i < n; ++i)
+            for (int j = i + 2; j < n; ++j)
+                if (!(i == 0 && j == n - 1) &&
+                    detail::SegmentsMeet2d(plane[i], plane[i + 1], plane[j], plane[(j + 1) % n]))
+                    expected.emplace_back(i, j);
+        EXPECT_EQ(detail::CrossingPolygonEdges(polygon, positions, normal), expected) << "polygon of " << n;
+        crossingsSeen += expected.size();
+    }
+    EXPECT_GT(crossingsSeen, 1000u);
+}

@@ -8,6 +8,8 @@
 #include <vsa/anchors.h>
 #include <vsa/mesh_validity.h>
 
+#include <vcg/space/box2.h>
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -16,6 +18,7 @@
 #include <limits>
 #include <numeric>
 #include <set>
+#include <tuple>
 #include <unordered_set>
 #include <utility>
 #include <vector>
@@ -298,12 +301,20 @@ inline std::vector<std::pair<int, int>> CrossingPolygonEdges(const std::vector<i
 {
     const std::vector<Point2d> plane = PolygonOnPlane(polygon, positions, normal);
     const int n = int(plane.size());
+    // Sweep along x: an edge can only meet the edges that begin (in x) before it ends.
+    std::vector<double> lowX(n), highX(n);
+    for (int i = 0; i < n; ++i) std::tie(lowX[i], highX[i]) = std::minmax(plane[i][0], plane[(i + 1) % n][0]);
+    std::vector<int> byLowX(n);
+    std::iota(byLowX.begin(), byLowX.end(), 0);
+    std::sort(byLowX.begin(), byLowX.end(), [&](int i, int j) { return lowX[i] < lowX[j] || (lowX[i] == lowX[j] && i < j); });
     std::vector<std::pair<int, int>> crossings;
-    for (int i = 0; i < n; ++i)
-        for (int j = i + 2; j < n; ++j) {
-            if (i == 0 && j == n - 1) continue;  // neighbours through vertex 0
-            if (SegmentsMeet2d(plane[i], plane[(i + 1) % n], plane[j], plane[(j + 1) % n])) crossings.emplace_back(i, j);
+    for (int a = 0; a < n; ++a)
+        for (int b = a + 1; b < n && lowX[byLowX[b]] <= highX[byLowX[a]]; ++b) {
+            const int i = std::min(byLowX[a], byLowX[b]), j = std::max(byLowX[a], byLowX[b]);
+            if (j - i < 2 || (i == 0 && j == n - 1)) continue;  // neighbours
+            if (SegmentsMeet2d(plane[i], plane[i + 1], plane[j], plane[(j + 1) % n])) crossings.emplace_back(i, j);
         }
+    std::sort(crossings.begin(), crossings.end());
     return crossings;
 }
 
@@ -410,8 +421,10 @@ private:
         const bool flooded = flooding_.count(OutputRegistry::Sorted(t)) != 0;
         const bool convex = Turn(p, k, q) > 0;
         bool empty = convex;
+        Box2d ear;  // a vertex outside the ear's box is outside the ear, with no turn to compute
+        for (int v : {p, k, q}) ear.Add(plane_[v]);
         for (int w = next_[q]; empty && w != p; w = next_[w])
-            empty = !(Turn(p, k, w) >= 0 && Turn(k, q, w) >= 0 && Turn(q, p, w) >= 0);
+            empty = !ear.IsIn(plane_[w]) || !(Turn(p, k, w) >= 0 && Turn(k, q, w) >= 0 && Turn(q, p, w) >= 0);
         if (convex && empty) rank_[k] = flooded ? 0 : 1;
         else if (flooded) rank_[k] = convex ? 2 : 3;
         else rank_[k] = convex ? 4 : 5;
