@@ -293,22 +293,13 @@ inline AnchorSet SelectAnchors(const MeshingSurface &s, detail::ChainSubdivision
         for (const std::vector<int> &loop : s.cellLoop)
             for (int v : loop) isAnchor[v] = required[v];  // only loop vertices can be anchors
 
-    std::vector<int> boundaryHalfEdges(vertexCount, 0);  // border edges count twice
-    for (int f = 0; f < s.FaceCount(); ++f)
-        for (int i = 0; i < 3; ++i) {
-            const int g = s.neighbors[f][i];
-            if (g >= 0 && s.faceCell[g] == s.faceCell[f]) continue;
-            const int weight = g < 0 ? 2 : 1;
-            boundaryHalfEdges[s.faces[f][i]] += weight;
-            boundaryHalfEdges[s.faces[f][(i + 1) % 3]] += weight;
-        }
     for (int v = 0; v < vertexCount; ++v) {
-        if (boundaryHalfEdges[v] >= 6) {  // three boundary edges or more
+        if (s.junction[v]) {
             ++result.junctions;
         } else if (isAnchor[v]) {
             ++result.required;
         }
-        isAnchor[v] |= boundaryHalfEdges[v] >= 6;
+        isAnchor[v] |= s.junction[v];
     }
 
     for (int c = 0; c < s.CellCount(); ++c) {
@@ -397,10 +388,6 @@ inline std::vector<Point3d> PlaceAnchors(const MeshingSurface &s, const AnchorSe
             shortestChord[a] = std::min(shortestChord[a], length);
             shortestChord[b] = std::min(shortestChord[b], length);
         }
-    std::vector<char> onBorder(s.VertexCount(), 0);
-    for (int f = 0; f < s.FaceCount(); ++f)
-        for (int i = 0; i < 3; ++i)
-            if (s.neighbors[f][i] < 0) onBorder[s.faces[f][i]] = onBorder[s.faces[f][(i + 1) % 3]] = 1;
     std::vector<int> regions;
     for (int a = 0; a < anchorCount; ++a) {
         const int v = anchors.vertexOfAnchor[a];
@@ -410,7 +397,7 @@ inline std::vector<Point3d> PlaceAnchors(const MeshingSurface &s, const AnchorSe
             regions.push_back(s.faceRegion[s.vertexFaces[k]]);
         std::sort(regions.begin(), regions.end());
         regions.erase(std::unique(regions.begin(), regions.end()), regions.end());
-        if (regions.size() == 1 && !onBorder[v]) continue;
+        if (regions.size() == 1 && !s.onBorder[v]) continue;
         const Point3d &p = placed[a];
         Point3d sum(0, 0, 0);
         for (int r : regions) sum += p - proxies[r].normal * ((p - proxies[r].point) * proxies[r].normal);

@@ -51,6 +51,9 @@ struct MeshingSurface
     std::vector<Point3d> cellAreaVector;
     std::vector<double> cellDoubleArea;
     std::vector<Point3d> cellCentroid;
+    /// Per vertex: on the mesh border; a junction, i.e. on three or more boundary edges
+    /// (between cells, or on the border), where three cells, or two and the border, meet.
+    std::vector<char> onBorder, junction;
     int regionCount = 0;
 
     // What was done to the input to make it walkable.
@@ -324,6 +327,24 @@ inline void MeasureCells(MeshingSurface &s)
     }
 }
 
+/// Fills onBorder and junction (see MeshingSurface).
+inline void MarkBoundaryVertices(MeshingSurface &s)
+{
+    std::vector<int> boundaryHalfEdges(s.VertexCount(), 0);  // border edges count twice
+    s.onBorder.assign(s.VertexCount(), 0);
+    for (int f = 0; f < s.FaceCount(); ++f)
+        for (int i = 0; i < 3; ++i) {
+            const int g = s.neighbors[f][i], a = s.faces[f][i], b = s.faces[f][(i + 1) % 3];
+            if (g >= 0 && s.faceCell[g] == s.faceCell[f]) continue;
+            const int weight = g < 0 ? 2 : 1;
+            boundaryHalfEdges[a] += weight;
+            boundaryHalfEdges[b] += weight;
+            if (g < 0) s.onBorder[a] = s.onBorder[b] = 1;
+        }
+    s.junction.resize(s.VertexCount());
+    for (int v = 0; v < s.VertexCount(); ++v) s.junction[v] = boundaryHalfEdges[v] >= 6;  // three edges or more
+}
+
 inline bool IsCellBoundary(const MeshingSurface &s, int f, int i)
 {
     const int g = s.neighbors[f][i];
@@ -451,6 +472,7 @@ inline bool BuildMeshingSurface(const IndexedMesh &im, const std::vector<int> &f
 
     detail::BuildCells(s);
     detail::MeasureCells(s);
+    detail::MarkBoundaryVertices(s);
     return detail::TraceCellLoops(s, error);
 }
 
