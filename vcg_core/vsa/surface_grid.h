@@ -4,6 +4,8 @@
 #ifndef VSA_SURFACE_GRID_H
 #define VSA_SURFACE_GRID_H
 
+#include <vsa/indexed_mesh.h>
+
 #include <vcg/space/box3.h>
 #include <vcg/space/distance3.h>
 #include <vcg/space/index/grid_util.h>
@@ -27,8 +29,8 @@ inline bool BoxesTouch(const Box3d &a, const Box3d &b)
     return true;
 }
 
-/// Faces bucketed by bounding box in a uniform grid of about one cell per face, as flat
-/// arrays (the faces of cell i are cellFaces_[cellOffset_[i] .. cellOffset_[i + 1])).
+/// Faces bucketed in a uniform grid of about one cell per face, as flat arrays (the faces of
+/// cell i are cellFaces_[cellOffset_[i] .. cellOffset_[i + 1])).
 class SurfaceGrid
 {
 public:
@@ -43,6 +45,7 @@ public:
             box_.Add(faceBox_[f]);
         }
         cellOffset_.assign(2, 0);  // one empty cell, unless there is something to bucket
+        faceCellOffset_.assign(faces.size() + 1, 0);
         if (box_.IsNull()) return;
         box_.Offset(box_.Diag() * 1e-9 + 1e-300);  // no zero-thickness box for a flat mesh
         BestDim<double>(std::max<size_t>(faces.size(), 1), box_.Dim(), dim_);
@@ -50,42 +53,24 @@ public:
             dim_[i] = std::max(dim_[i], 1);
             cellSize_[i] = box_.Dim()[i] / dim_[i];
         }
-        cellOffset_.assign(size_t(dim_[0]) * dim_[1] * dim_[2] + 1, 0);
-        for (int f = 0; f < int(faces.size()); ++f) ForEachCellOfFace(f, [&](size_t cell) { ++cellOffset_[cell + 1]; });
-        for (size_t i = 1; i < cellOffset_.size(); ++i) cellOffset_[i] += cellOffset_[i - 1];
-        cellFaces_.resize(cellOffset_.back());
-        std::vector<int> filled(cellOffset_.begin(), cellOffset_.end() - 1);
-        for (int f = 0; f < int(faces.size()); ++f) ForEachCellOfFace(f, [&](size_t cell) { cellFaces_[filled[cell]++] = f; });
+        std::vector<int> faceOfEntry;
+        for (int f = 0; f < int(faces.size()); ++f) {
+            CellsCrossedBy(f, [&](int cell) {
+                faceCells_.push_back(cell);
+                faceOfEntry.push_back(f);
+            });
+            faceCellOffset_[f + 1] = int(faceCells_.size());
+        }
+        detail::BuildOffsets(faceCells_, dim_[0] * dim_[1] * dim_[2], cellOffset_, cellFaces_);
+        for (int &entry : cellFaces_) entry = faceOfEntry[entry];
     }
 
-    /// Calls visit(cell index) for each cell face f is in: the cells of its box that its plane
-    /// crosses (a big slanted face crosses far fewer than its box holds). None for a skipped face.
+    /// Calls visit(cell index) for each cell face f is in (see CellsCrossedBy); none for a
+    /// skipped face.
     template <class Visit>
     void ForEachCellOfFace(int f, Visit visit) const
     {
-        if (faceBox_[f].IsNull()) return;
-        const Point3i lo = CellOf(faceBox_[f].min), hi = CellOf(faceBox_[f].max);
-        // A small box has few cells to spare: not worth the test.
-        const bool testPlane = (hi[0] - lo[0] + 1) * (hi[1] - lo[1] + 1) * (hi[2] - lo[2] + 1) > 8;
-        const Point3d &corner = positions_[faces_[f][0]];
-        Point3d n(0, 0, 0);
-        double reach = 0;
-        if (testPlane) {
-            const Point3d e1 = positions_[faces_[f][1]] - corner, e2 = positions_[faces_[f][2]] - corner;
-            n = e1 ^ e2;
-            // Half the cell's extent along n, with room for rounding (of n too, which is all
-            // rounding on a sliver): never miss a cell the face touches.
-            reach = (std::abs(n[0]) * cellSize_[0] + std::abs(n[1]) * cellSize_[1] + std::abs(n[2]) * cellSize_[2]) *
-                        (0.5 + 1e-6) +
-                    1e-10 * e1.Norm() * e2.Norm() * box_.Diag();
-        }
-        for (int z = lo[2]; z <= hi[2]; ++z)
-            for (int y = lo[1]; y <= hi[1]; ++y)
-                for (int x = lo[0]; x <= hi[0]; ++x) {
-                    const Point3d center = box_.min + Point3d((x + 0.5) * cellSize_[0], (y + 0.5) * cellSize_[1],
-                                                              (z + 0.5) * cellSize_[2]);
-                    if (!testPlane || std::abs(n * (center - corner)) <= reach) visit(CellIndex(x, y, z));
-                }
+        for (int k = faceCellOffset_[f]; k < faceCellOffset_[f + 1]; ++k) visit(faceCells_[k]);
     }
 
     /// The cell holding p (clamped to the grid).
@@ -127,6 +112,36 @@ public:
     }
 
 private:
+    /// The cells of face f's box that its plane crosses: a big slanted face crosses far fewer
+    /// than its box holds.
+    template <class Visit>
+    void CellsCrossedBy(int f, Visit visit) const
+    {
+        if (faceBox_[f].IsNull()) return;
+        const Point3i lo = CellOf(faceBox_[f].min), hi = CellOf(faceBox_[f].max);
+        // A small box has few cells to spare: not worth the test.
+        const bool testPlane = (hi[0] - lo[0] + 1) * (hi[1] - lo[1] + 1) * (hi[2] - lo[2] + 1) > 8;
+        const Point3d &corner = positions_[faces_[f][0]];
+        Point3d n(0, 0, 0);
+        double reach = 0;
+        if (testPlane) {
+            const Point3d e1 = positions_[faces_[f][1]] - corner, e2 = positions_[faces_[f][2]] - corner;
+            n = e1 ^ e2;
+            // Half the cell's extent along n, with room for rounding (of n too, which is all
+            // rounding on a sliver): never miss a cell the face touches.
+            reach = (std::abs(n[0]) * cellSize_[0] + std::abs(n[1]) * cellSize_[1] + std::abs(n[2]) * cellSize_[2]) *
+                        (0.5 + 1e-6) +
+                    1e-10 * e1.Norm() * e2.Norm() * box_.Diag();
+        }
+        for (int z = lo[2]; z <= hi[2]; ++z)
+            for (int y = lo[1]; y <= hi[1]; ++y)
+                for (int x = lo[0]; x <= hi[0]; ++x) {
+                    const Point3d center = box_.min + Point3d((x + 0.5) * cellSize_[0], (y + 0.5) * cellSize_[1],
+                                                              (z + 0.5) * cellSize_[2]);
+                    if (!testPlane || std::abs(n * (center - corner)) <= reach) visit(int(CellIndex(x, y, z)));
+                }
+    }
+
     bool CellHasFaceWithin(size_t cell, const Point3d &p, double radius, const Box3d &query) const
     {
         const auto [first, last] = FacesIn(cell);
@@ -150,6 +165,7 @@ private:
     Point3i dim_{1, 1, 1};
     Point3d cellSize_{1, 1, 1};
     std::vector<int> cellOffset_, cellFaces_;
+    std::vector<int> faceCellOffset_, faceCells_;  ///< the cells of face f, same layout
 };
 
 }  // namespace vsa
