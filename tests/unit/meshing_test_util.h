@@ -119,8 +119,9 @@ inline vcg::tri::vsa::IndexedMesh RandomTriangleSoup(int big, int small, unsigne
         // Every fifth face reuses a corner of the one before.
         const int first = f % 5 == 4 ? n - 1 : n;
         if (first == n) soup.positions.push_back(point());
-        const Point3d &a = soup.positions[first];
-        for (int i = 0; i < 2; ++i) soup.positions.push_back(f < big ? point() : a + (point() - Point3d(0.5, 0.5, 0.5)) * 0.04);
+        const Point3d a = soup.positions[first];  // a copy: the pushes below may move the vector
+        for (int i = 0; i < 2; ++i)
+            soup.positions.push_back(f < big ? point() : a + (point() - Point3d(0.5, 0.5, 0.5)) * 0.04);
         soup.faces.push_back({first, int(soup.positions.size()) - 2, int(soup.positions.size()) - 1});
     }
     return soup;

@@ -306,7 +306,8 @@ inline std::vector<std::pair<int, int>> CrossingPolygonEdges(const std::vector<i
     for (int i = 0; i < n; ++i) std::tie(lowX[i], highX[i]) = std::minmax(plane[i][0], plane[(i + 1) % n][0]);
     std::vector<int> byLowX(n);
     std::iota(byLowX.begin(), byLowX.end(), 0);
-    std::sort(byLowX.begin(), byLowX.end(), [&](int i, int j) { return lowX[i] < lowX[j] || (lowX[i] == lowX[j] && i < j); });
+    std::sort(byLowX.begin(), byLowX.end(),
+              [&](int i, int j) { return lowX[i] < lowX[j] || (lowX[i] == lowX[j] && i < j); });
     std::vector<std::pair<int, int>> crossings;
     for (int a = 0; a < n; ++a)
         for (int b = a + 1; b < n && lowX[byLowX[b]] <= highX[byLowX[a]]; ++b) {
