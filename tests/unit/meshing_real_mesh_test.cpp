@@ -135,6 +135,19 @@ TEST(MeshingRealMeshes, InputFacesOnlyWithinTheFaceBudget)
     EXPECT_EQ(single.repairRounds, 0);
 }
 
+TEST(MeshingRealMeshes, TheOutputPassIsTheOneWithFewestIntersections)
+{
+    // Boeing at k=50: an early pass has the fewest defects in all (hundreds of intersecting
+    // pairs, fewer polygon crossings), the last pass the fewest intersections (none; its 556
+    // crossings the triangulation avoids). The output must be the last pass: no intersection.
+    const SweepCase c{"boeing.off", 50, SeedingMethod::Hierarchical};
+    MeshingReport r;
+    CheckCase(c, false, MeshingParam(), &r);
+    EXPECT_EQ(r.validity.selfIntersections, 0);
+    EXPECT_EQ(r.repairRounds, r.passes - 1);
+    EXPECT_GT(r.passes, 10);
+}
+
 TEST(MeshingSweep, RealMeshes)
 {
     const std::vector<std::string> meshes = {"fandisk.off", "blade.off",  "bunny00.off", "elephant.off",
