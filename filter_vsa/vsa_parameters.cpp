@@ -47,7 +47,8 @@ void DefineVsaParameters(RichParameterList &parameters, const CMeshO &mesh)
     parameters.addParam(RichFloat("AnchorThreshold", float(defaults.meshing.chordThreshold), "Anchor threshold",
         "Chord subdivision: a boundary vertex becomes an anchor while its distance to the chord, times the "
         "sine of the angle between the two proxies, over the chord length exceeds this value. "
-        "Smaller keeps more detail (more vertices); 0.1 to 0.4 work well."));
+        "Smaller keeps more detail (more vertices); 0.1 to 0.4 work well. Whatever its value, a chord is also "
+        "split while it strays farther than the regions do from their planes."));
     parameters.addParam(RichBool("ProjectAnchors", defaults.meshing.projectAnchors, "Project anchors on proxies",
         "Place each anchor at the average of its projections on the planes of the proxies around it "
         "(as in the paper); when off, anchors keep the position of the original vertex."));

@@ -148,6 +148,35 @@ TEST(MeshingRealMeshes, TheOutputPassIsTheOneWithFewestIntersections)
     EXPECT_GT(r.passes, 10);
 }
 
+TEST(MeshingRealMeshes, ExactRegionsGiveAnExactOutline)
+{
+    // Blade at k=500 is cut into exactly planar regions (energy about 1e-29). By the paper's
+    // criterion alone, long chains on its open border cut two right-angled corners off, by
+    // 2e-3 of the diagonal; bounded by the planes' error, the output passes through every
+    // input vertex up to rounding.
+    TMesh m;
+    std::string error;
+    if (!vsa_test::LoadMesh(m, vsa_test::CgalMesh("blade.off"), &error)) GTEST_SKIP() << error;
+    const IndexedMesh im = BuildIndexedMesh(m);
+    ApproximationParam ap;
+    ap.proxyCount = 500;
+    const ApproximationResult partition = Approximate(im, ap);
+    ASSERT_TRUE(partition.ok) << partition.error;
+    vcg::Box3d box;
+    for (const vcg::Point3d &p : im.positions) box.Add(p);
+    auto farthestInputVertex = [&](double chordErrorFactor) {
+        MeshingParam param;
+        param.chordErrorFactor = chordErrorFactor;
+        TMesh out;
+        const MeshingReport r = BuildApproximatingMesh(im, partition.partition, param, out);
+        EXPECT_TRUE(r.ok) << r.error;
+        EXPECT_TRUE(r.validity.IsTwoManifold()) << r.validity.Summary();
+        return vsa_test::MaxDistanceToSurface(im.positions, BuildIndexedMesh(out)) / box.Diag();
+    };
+    EXPECT_GT(farthestInputVertex(0), 1e-3);
+    EXPECT_LT(farthestInputVertex(MeshingParam().chordErrorFactor), 1e-6);
+}
+
 TEST(MeshingSweep, RealMeshes)
 {
     const std::vector<std::string> meshes = {"fandisk.off", "blade.off",  "bunny00.off", "elephant.off",

@@ -146,8 +146,21 @@ TEST(Meshing, ChordThresholdOnAFlatDisc)
     const IndexedMesh im = BuildIndexedMesh(disc);
     const Partition one = vsa_test::PartitionByRule(im, 1, [](int) { return 0; });
 
-    // Threshold 0 keeps every bend of the border: each border vertex becomes an anchor.
+    // The disc is exactly planar, so by default its outline is kept exactly, whatever the
+    // threshold: a chord may not stray farther than the plane does (see chordErrorFactor).
+    for (double threshold : {0.0, 0.2, 1e9}) {
+        MeshingParam exact;
+        exact.chordThreshold = threshold;
+        MeshingRun run;
+        Mesh(disc, one, exact, run);
+        ExpectValidWithInputTopology(run);
+        EXPECT_EQ(run.report.anchors, 24) << threshold;
+    }
+
+    // The paper's criterion alone. Threshold 0 keeps every bend of the border: each border
+    // vertex becomes an anchor.
     MeshingParam param;
+    param.chordErrorFactor = 0;
     param.chordThreshold = 0;
     MeshingRun fine;
     Mesh(disc, one, param, fine);
@@ -182,6 +195,49 @@ TEST(Meshing, ChordThresholdOnAFlatDisc)
     }
     EXPECT_LT(previous, 24);
     EXPECT_GT(previous, 3);
+}
+
+// A 10 x 1 strip, one region. Three of its corners are anchors (the loop's seed, then the
+// farthest vertices); the chain around the fourth strays 10 / sqrt(101) = 0.995 from its chord
+// of length sqrt(101), a ratio of 0.099: the paper's criterion cuts that corner off, and half
+// the strip with it. The bound by the partition's own error keeps it. The strip is bent into
+// z = A (2x/10 - 1)^2, whose plane error is 2A/3 (the proxy point sits at z = A/3), so the
+// bound's scale shows: the long sides' chains stray A from their chords, more than 2A/3.
+TEST(Meshing, ChordErrorBoundKeepsTheCornersTheRegionsFit)
+{
+    const double bend = 0.01;
+    TMesh strip;
+    vsa_test::MakeQuadGrid(strip, 20, 2, [&](int i, int j) {
+        const double t = 2 * (i / 20.0) - 1;
+        return vcg::Point3f(0.5f * i, 0.5f * j, float(bend * t * t));
+    });
+    const IndexedMesh im = BuildIndexedMesh(strip);
+    const Partition one = vsa_test::PartitionByRule(im, 1, [](int) { return 0; });
+    ASSERT_NEAR(one.proxies[0].point[2], bend / 3, 1e-4);
+    auto run = [&](double factor, MeshingRun &r) {
+        MeshingParam param;
+        param.chordErrorFactor = factor;
+        Mesh(strip, one, param, r);
+        ExpectValidWithInputTopology(r);
+    };
+
+    MeshingRun paperOnly, loose, corners, tight;
+    run(0, paperOnly);
+    EXPECT_EQ(paperOnly.report.anchors, 3);
+    EXPECT_NEAR(vsa_test::SurfaceArea(paperOnly.output), 5, 0.01);
+    // Bounds of 50 * 2A/3 = 0.33 and of 1000 * 2A/3 = 6.7, on either side of 0.995.
+    run(1000, loose);
+    EXPECT_EQ(loose.report.anchors, 3);
+    run(50, corners);
+    EXPECT_EQ(corners.report.anchors, 4);
+    EXPECT_EQ(corners.out.FN(), 2);
+    EXPECT_NEAR(vsa_test::SurfaceArea(corners.output), 10, 0.01);
+    // The default bound, 2A/3: the long sides are also split at their middle, once.
+    run(MeshingParam().chordErrorFactor, tight);
+    ASSERT_EQ(tight.report.anchors, 6);
+    std::set<std::pair<double, double>> corners2d;  // (x, y): z moves with the projection
+    for (const Point3d &p : tight.output.positions) corners2d.insert({p[0], p[1]});
+    EXPECT_EQ(corners2d, (std::set<std::pair<double, double>>{{0, 0}, {5, 0}, {10, 0}, {0, 1}, {5, 1}, {10, 1}}));
 }
 
 // Two coplanar regions, the inner and outer halves of a flat "C": the paper's criterion
@@ -480,6 +536,16 @@ TEST(Meshing, RejectsWhatItCannotMeshWithAClearError)
     vcg::tri::Append<TMesh, TMesh>::MeshCopy(nan, cube);
     nan.vert[0].P()[1] = std::numeric_limits<float>::quiet_NaN();
     expectError(nan, p, "NaN");
+
+    for (double MeshingParam::*field : {&MeshingParam::chordThreshold, &MeshingParam::chordGapThreshold,
+                                         &MeshingParam::chordErrorFactor, &MeshingParam::maxAnchorMove}) {
+        MeshingParam negative;
+        negative.*field = -1;
+        TMesh out;
+        const MeshingReport r = BuildApproximatingMesh(BuildIndexedMesh(cube), p, negative, out);
+        EXPECT_FALSE(r.ok);
+        EXPECT_NE(r.error.find("non-negative"), std::string::npos) << r.error;
+    }
 }
 
 TEST(Meshing, IgnoresFacesWithARepeatedVertexAndBadProxies)

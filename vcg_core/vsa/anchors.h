@@ -155,18 +155,39 @@ private:
     std::unique_ptr<SurfaceGrid> surface_;
 };
 
+/// How far any chain may stray from its chord (d * weight, see ChainAngleWeight), whatever
+/// its length: `factor` times the partition's own error, the largest distance of a vertex from
+/// its region's proxy plane. The paper's criterion alone lets a long chain cut a corner of its
+/// region by up to threshold * |chord|, far more than the planes' error once they fit well (a
+/// CAD mesh whose regions are exactly planar kept its cut corners for any k). Planes within
+/// 1e-6 times the bounding-box diagonal count as exact, so that rounding does not split
+/// straight chains. Infinite when factor is 0.
+inline double ChordDeviationBound(const MeshingSurface &s, const std::vector<Proxy> &proxies, double factor)
+{
+    if (!(factor > 0)) return std::numeric_limits<double>::infinity();
+    double planeError = 0;
+    for (int f = 0; f < s.FaceCount(); ++f) {
+        const Proxy &proxy = proxies[s.faceRegion[f]];
+        for (int v : s.faces[f])
+            planeError = std::max(planeError, std::abs((s.positions[v] - proxy.point) * proxy.normal));
+    }
+    Box3d box;
+    for (const Point3d &p : s.positions) box.Add(p);
+    return std::max(factor * planeError, 1e-6 * box.Diag());
+}
+
 /// The chord subdivision of chains: each chain is split recursively at its vertex farthest
-/// from the chord while d * weight / |chord| exceeds the threshold (see ChainAngleWeight), or
-/// while the chord strays from the surface (the gap test, when given); a chain from an anchor
-/// back to itself is always split. A chain's splits depend on nothing but its cell and loop
-/// positions, so they are remembered: repair passes ask again for every chain they did not
-/// change.
+/// from the chord while d * weight / |chord| exceeds the threshold (see ChainAngleWeight) or
+/// d * weight exceeds `maxDeviation` (see ChordDeviationBound), or while the chord strays from
+/// the surface (the gap test, when given); a chain from an anchor back to itself is always
+/// split. A chain's splits depend on nothing but its cell and loop positions, so they are
+/// remembered: repair passes ask again for every chain they did not change.
 class ChainSubdivision
 {
 public:
     ChainSubdivision(const MeshingSurface &s, const std::vector<Proxy> &proxies, double threshold,
-                     ChordGapTest *gap = nullptr)
-        : s_(s), proxies_(proxies), threshold_(threshold), gap_(gap)
+                     double maxDeviation = std::numeric_limits<double>::infinity(), ChordGapTest *gap = nullptr)
+        : s_(s), proxies_(proxies), threshold_(threshold), maxDeviation_(maxDeviation), gap_(gap)
     {
     }
 
@@ -182,6 +203,7 @@ private:
     const MeshingSurface &s_;
     const std::vector<Proxy> &proxies_;
     double threshold_;
+    double maxDeviation_;
     ChordGapTest *gap_;
     std::map<std::array<int, 3>, std::vector<int>> splits_;  ///< by (cell, from, to)
 
@@ -200,7 +222,8 @@ private:
             const int split = FarthestFromChord(s_, chain.cell, from, to, &distance);
             const Point3d &a = s_.positions[loop[from % m]], &b = s_.positions[loop[to % m]];
             const bool closedChain = loop[to % m] == loop[from % m];
-            if (!closedChain && !(distance * weight > threshold_ * (b - a).Norm()) &&
+            const double deviation = distance * weight;
+            if (!closedChain && !(deviation > threshold_ * (b - a).Norm()) && !(deviation > maxDeviation_) &&
                 !(gap_ && gap_->Strays(a, b, distance)))
                 continue;
             splits.push_back(split);
@@ -346,7 +369,7 @@ inline AnchorSet SelectAnchors(const MeshingSurface &s, detail::ChainSubdivision
 inline AnchorSet SelectAnchors(const MeshingSurface &s, const std::vector<Proxy> &proxies, double chordThreshold,
                                const std::vector<char> &required = {}, detail::ChordGapTest *gap = nullptr)
 {
-    detail::ChainSubdivision subdivision(s, proxies, chordThreshold, gap);
+    detail::ChainSubdivision subdivision(s, proxies, chordThreshold, std::numeric_limits<double>::infinity(), gap);
     return SelectAnchors(s, subdivision, required);
 }
 
