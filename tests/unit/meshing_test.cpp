@@ -693,6 +693,14 @@ void MakeRepairSequence(const TMesh &m, int steps, RepairSequence &r)
     }
 }
 
+/// Anchors by a chord subdivision made for this call alone.
+AnchorSet FreshAnchors(const MeshingSurface &s, const std::vector<Proxy> &proxies, double chordThreshold,
+                       const std::vector<char> &required = {})
+{
+    detail::ChainSubdivision subdivision(s, proxies, chordThreshold);
+    return SelectAnchors(s, subdivision, required);
+}
+
 }  // namespace
 
 // Repair passes update each cell's flooding instead of redoing it; the colours must be those
@@ -710,7 +718,7 @@ TEST(Meshing, UpdatedFloodingEqualsAFreshOne)
         const MeshingSurface &s = r.surface;
         CellFlooding updated(s);
         for (const std::vector<char> &required : r.required) {
-            const AnchorSet anchors = SelectAnchors(s, r.partition.proxies, 0.5, required);
+            const AnchorSet anchors = FreshAnchors(s, r.partition.proxies, 0.5, required);
             for (int c = 0; c < s.CellCount(); ++c) {
                 CellFlooding fresh(s);
                 const std::set<std::array<int, 3>> expected = fresh.Triples(c, anchors);
@@ -732,9 +740,9 @@ TEST(Meshing, RememberedChordSubdivisionEqualsAFreshOne)
     MakeRepairSequence(hemisphere, 20, r);
     const MeshingSurface &s = r.surface;
     detail::ChainSubdivision remembered(s, r.partition.proxies, 0.2);
-    const AnchorSet coarse = SelectAnchors(s, r.partition.proxies, 0.2);
+    const AnchorSet coarse = FreshAnchors(s, r.partition.proxies, 0.2);
     for (const std::vector<char> &required : r.required) {
-        const AnchorSet expected = SelectAnchors(s, r.partition.proxies, 0.2, required);
+        const AnchorSet expected = FreshAnchors(s, r.partition.proxies, 0.2, required);
         const AnchorSet anchors = SelectAnchors(s, remembered, required);
         EXPECT_GT(expected.Count(), required.empty() ? 0 : coarse.Count());
         EXPECT_GT(expected.chordSplits, 0);

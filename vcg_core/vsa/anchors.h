@@ -300,8 +300,7 @@ inline int SplitDuplicateChords(const MeshingSurface &s, std::vector<char> &isAn
 ///     i.e. where three cells meet, or two cells meet on the mesh border.
 ///  2. A loop with no junction (an island's shore, a hole, a region's whole border) gets one
 ///     anchor at its vertex farthest from its centroid.
-///  3. Chord subdivision (`subdivision`: the paper's criterion, and the gap test when it has
-///     one) on every chain, recursively.
+///  3. Chord subdivision (`subdivision`, see ChainSubdivision) on every chain, recursively.
 ///  4. Loops with fewer than three anchors are completed with farthest vertices.
 ///  5. Chains joining the same two anchors are split until chords are unique.
 /// 3-5 repeat until nothing changes. `required` (empty, or one flag per surface vertex) names
@@ -362,15 +361,6 @@ inline AnchorSet SelectAnchors(const MeshingSurface &s, detail::ChainSubdivision
             result.vertexOfAnchor.push_back(v);
         }
     return result;
-}
-
-/// SelectAnchors with the chord subdivision of `proxies` (unit normals) and `chordThreshold`,
-/// and `gap` when given.
-inline AnchorSet SelectAnchors(const MeshingSurface &s, const std::vector<Proxy> &proxies, double chordThreshold,
-                               const std::vector<char> &required = {}, detail::ChordGapTest *gap = nullptr)
-{
-    detail::ChainSubdivision subdivision(s, proxies, chordThreshold, std::numeric_limits<double>::infinity(), gap);
-    return SelectAnchors(s, subdivision, required);
 }
 
 /// The anchor polygon of every cell: its anchors in loop order (the cell on the left).
