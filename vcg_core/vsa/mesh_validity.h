@@ -177,12 +177,27 @@ inline FaceShape ShapeOfFace(const IndexedMesh &im, int f)
     return shape;
 }
 
+/// Whether face f's corners come before face g's, compared as positions in order: an order of
+/// two faces that does not depend on how they are numbered.
+inline bool CornersBefore(const IndexedMesh &im, int f, int g)
+{
+    for (int i = 0; i < 3; ++i) {
+        const Point3d &p = im.positions[im.faces[f][i]], &q = im.positions[im.faces[g][i]];
+        for (int axis = 0; axis < 3; ++axis)
+            if (p[axis] != q[axis]) return p[axis] < q[axis];
+    }
+    return f < g;
+}
+
 /// Whether faces f and g of `im` meet anywhere but at their shared corners. Corners are
 /// shared when they are at the same place, whether or not they are the same vertex: faces of
 /// an unmerged mesh, or of a mesh whose non-manifold vertex was split, that touch only along
-/// their common corners do not intersect. `shape` is ShapeOfFace of every face.
+/// their common corners do not intersect. `shape` is ShapeOfFace of every face. The answer
+/// depends on the two triangles only, not on their numbering or the order of f and g (the
+/// tests below are not symmetric in rounding): FindDefects reuses it for a later pass.
 inline bool FacesIntersect(const IndexedMesh &im, const std::vector<FaceShape> &shape, int f, int g)
 {
+    if (CornersBefore(im, g, f)) std::swap(f, g);
     const auto &tf = im.faces[f], &tg = im.faces[g];
     const auto &P = im.positions;
     int sharedF[3], sharedG[3], shared = 0;
@@ -286,30 +301,33 @@ inline std::vector<char> DegenerateFaceMask(const IndexedMesh &im)
 /// Pairs (f < g) of faces not flagged in `degenerate` (DegenerateFaceMask) that intersect
 /// beyond their shared corners, sorted; only pairs with a face flagged in `fresh` when it is
 /// not empty (the pairs of the other faces are known). Needs only `faces` and `positions`.
-/// Faces go in a SurfaceGrid, and each fresh face meets the faces of its grid cells there,
-/// each once; a pair of fresh faces is tested from its lower face only.
+/// The fresh faces go in a SurfaceGrid, and every face meets the fresh faces of its grid
+/// cells there, each once; a pair of fresh faces is tested from its lower face only. After a
+/// repair few faces are fresh, and a grid of those alone is cheap to build.
 inline std::vector<std::pair<int, int>> SelfIntersectingPairs(const IndexedMesh &im, const std::vector<char> &degenerate,
                                                               const std::vector<char> &fresh)
 {
     const int faceCount = im.FaceCount();
-    const SurfaceGrid grid(im.positions, im.faces, degenerate);
+    auto isFresh = [&](int f) { return fresh.empty() || fresh[f]; };
+    std::vector<char> outOfGrid(faceCount);
+    for (int f = 0; f < faceCount; ++f) outOfGrid[f] = degenerate[f] || !isFresh(f);
+    const SurfaceGrid grid(im.positions, im.faces, outOfGrid);
     std::vector<FaceShape> shape(faceCount);
     for (int f = 0; f < faceCount; ++f)
         if (!degenerate[f]) shape[f] = ShapeOfFace(im, f);
-    auto isFresh = [&](int f) { return fresh.empty() || fresh[f]; };
-    std::vector<int> metFrom(faceCount, -1);  // the last fresh face that met this one
+    std::vector<int> metFrom(faceCount, -1);  // the last face that met this fresh one
     std::vector<std::pair<int, int>> pairs;
     for (int f = 0; f < faceCount; ++f) {
-        if (degenerate[f] || !isFresh(f)) continue;
+        if (degenerate[f]) continue;
+        const bool freshF = isFresh(f);
         grid.ForEachCellOfFace(f, [&](size_t cell) {
             const auto [first, last] = grid.FacesIn(cell);
             for (const int *other = first; other != last; ++other) {
                 const int g = *other;
-                if (g == f || (g < f && isFresh(g)) || metFrom[g] == f) continue;
+                if (g == f || (freshF && g < f) || metFrom[g] == f) continue;
                 metFrom[g] = f;
                 if (!BoxesTouch(grid.FaceBox(f), grid.FaceBox(g))) continue;
-                const int low = std::min(f, g), high = std::max(f, g);
-                if (FacesIntersect(im, shape, low, high)) pairs.emplace_back(low, high);
+                if (FacesIntersect(im, shape, f, g)) pairs.emplace_back(std::min(f, g), std::max(f, g));
             }
         });
     }

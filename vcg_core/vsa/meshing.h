@@ -15,6 +15,7 @@
 #include <vcg/complex/algorithms/update/normal.h>
 #include <vcg/complex/complex.h>
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 #include <string>
@@ -358,33 +359,38 @@ struct PassDefects
     }
 };
 
-/// Per face of `pass`, the face of `previous` it repeats: same cell, same place in the cell's
-/// range, same corner positions in the same order, and as degenerate or not (the passes' masks,
-/// see DegenerateFaceMask); else -1. FacesIntersect sees nothing else of a face, so a pair of
-/// repeated faces intersects in both passes or in neither; all -1 unless repeated faces keep
-/// their order, which keeps the pair's roles (f < g) in that test.
+/// Per face of `pass`, a face of `previous` it repeats: the same corner positions in the same
+/// order, and as degenerate or not (the passes' masks, see DegenerateFaceMask); else -1. Each
+/// face of `previous` is repeated at most once. FacesIntersect sees nothing else of two faces,
+/// so a pair of repeated faces intersects in both passes or in neither. Faces are matched by
+/// their corners, not by their cells: a cell that a repair changed keeps most of its triangles.
 inline std::vector<int> RepeatedFaces(const MeshingPass &pass, const std::vector<char> &degenerate,
                                       const MeshingPass &previous, const std::vector<char> &wasDegenerate)
 {
-    std::vector<int> repeats(pass.triangles.size(), -1);
+    // Candidates share the surface vertex of the first corner (none for a centroid vertex).
+    auto firstSource = [](const MeshingPass &p, int f) { return p.vertexSource[p.triangles[f][0]]; };
+    std::vector<int> sourceOfFace(previous.triangles.size());
+    int sourceCount = 0;
+    for (size_t g = 0; g < sourceOfFace.size(); ++g) {
+        sourceOfFace[g] = firstSource(previous, int(g));
+        sourceCount = std::max(sourceCount, sourceOfFace[g] + 1);
+    }
+    std::vector<int> offset, facesOfSource;
+    BuildOffsets(sourceOfFace, sourceCount, offset, facesOfSource);
     auto same = [&](int f, int g) {
         for (int i = 0; i < 3; ++i)
             if (pass.positions[pass.triangles[f][i]] != previous.positions[previous.triangles[g][i]]) return false;
         return degenerate[f] == wasDegenerate[g];
     };
-    for (size_t c = 0; c < pass.cellTriangles.size(); ++c) {
-        const auto [first, last] = pass.cellTriangles[c];
-        const int previousFirst = previous.cellTriangles[c].first;
-        if (last - first != previous.cellTriangles[c].second - previousFirst) continue;
-        bool repeated = true;
-        for (int t = first; t < last && repeated; ++t) repeated = same(t, previousFirst + t - first);
-        for (int t = first; t < last && repeated; ++t) repeats[t] = previousFirst + t - first;
-    }
-    int lastRepeated = -1;
-    for (int g : repeats) {
-        if (g < 0) continue;
-        if (g < lastRepeated) return std::vector<int>(pass.triangles.size(), -1);
-        lastRepeated = g;
+    std::vector<int> repeats(pass.triangles.size(), -1);
+    std::vector<char> taken(previous.triangles.size(), 0);
+    for (int f = 0; f < int(repeats.size()); ++f) {
+        const int source = firstSource(pass, f);
+        if (source < 0 || source >= sourceCount) continue;
+        for (int k = offset[source]; k < offset[source + 1] && repeats[f] < 0; ++k) {
+            const int g = facesOfSource[k];
+            if (!taken[g] && same(f, g)) repeats[f] = g, taken[g] = 1;
+        }
     }
     return repeats;
 }
@@ -410,7 +416,8 @@ inline PassDefects FindDefects(const MeshingPass &pass, const MeshingPass *previ
         }
         defects.intersections = SelfIntersectingPairs(output, defects.degenerate, fresh);
         for (const auto &[f, g] : previousDefects->intersections)
-            if (repeatOf[f] >= 0 && repeatOf[g] >= 0) defects.intersections.emplace_back(repeatOf[f], repeatOf[g]);
+            if (repeatOf[f] >= 0 && repeatOf[g] >= 0)
+                defects.intersections.emplace_back(std::minmax(repeatOf[f], repeatOf[g]));
         std::sort(defects.intersections.begin(), defects.intersections.end());
     } else {
         defects.intersections = SelfIntersectingPairs(output, defects.degenerate, {});

@@ -39,23 +39,25 @@ public:
                 const std::vector<char> &skip = {})
         : positions_(positions), faces_(faces), faceBox_(faces.size())
     {
+        size_t inGrid = 0;
         for (size_t f = 0; f < faces.size(); ++f) {
-            if (!skip.empty() && skip[f]) continue;
             for (int v : faces[f]) faceBox_[f].Add(positions[v]);
+            if (!skip.empty() && skip[f]) continue;
             box_.Add(faceBox_[f]);
+            ++inGrid;
         }
         cellOffset_.assign(2, 0);  // one empty cell, unless there is something to bucket
         faceCellOffset_.assign(faces.size() + 1, 0);
         if (box_.IsNull()) return;
         box_.Offset(box_.Diag() * 1e-9 + 1e-300);  // no zero-thickness box for a flat mesh
-        BestDim<double>(std::max<size_t>(faces.size(), 1), box_.Dim(), dim_);
+        BestDim<double>(std::max<size_t>(inGrid, 1), box_.Dim(), dim_);
         for (int i = 0; i < 3; ++i) {
             dim_[i] = std::max(dim_[i], 1);
             cellSize_[i] = box_.Dim()[i] / dim_[i];
         }
         std::vector<int> faceOfEntry;
         for (int f = 0; f < int(faces.size()); ++f) {
-            CellsCrossedBy(f, [&](int cell) {
+            if (skip.empty() || !skip[f]) CellsCrossedBy(f, [&](int cell) {
                 faceCells_.push_back(cell);
                 faceOfEntry.push_back(f);
             });
@@ -65,11 +67,12 @@ public:
         for (int &entry : cellFaces_) entry = faceOfEntry[entry];
     }
 
-    /// Calls visit(cell index) for each cell face f is in (see CellsCrossedBy); none for a
-    /// skipped face.
+    /// Calls visit(cell index) for each cell face f is in (see CellsCrossedBy); for a skipped
+    /// face, each cell it would be in, so that it can meet the faces of the grid.
     template <class Visit>
     void ForEachCellOfFace(int f, Visit visit) const
     {
+        if (faceCellOffset_[f] == faceCellOffset_[f + 1]) return CellsCrossedBy(f, visit);  // skipped
         for (int k = faceCellOffset_[f]; k < faceCellOffset_[f + 1]; ++k) visit(faceCells_[k]);
     }
 
@@ -117,7 +120,7 @@ private:
     template <class Visit>
     void CellsCrossedBy(int f, Visit visit) const
     {
-        if (faceBox_[f].IsNull()) return;
+        if (box_.IsNull() || !BoxesTouch(faceBox_[f], box_)) return;
         const Point3i lo = CellOf(faceBox_[f].min), hi = CellOf(faceBox_[f].max);
         // A small box has few cells to spare: not worth the test.
         const bool testPlane = (hi[0] - lo[0] + 1) * (hi[1] - lo[1] + 1) * (hi[2] - lo[2] + 1) > 8;
