@@ -72,7 +72,7 @@ public:
     template <class Visit>
     void ForEachCellOfFace(int f, Visit visit) const
     {
-        if (faceCellOffset_[f] == faceCellOffset_[f + 1]) return CellsCrossedBy(f, visit);  // skipped
+        if (faceCellOffset_[f] == faceCellOffset_[f + 1]) return CellsCrossedBy(f, visit, true);  // skipped
         for (int k = faceCellOffset_[f]; k < faceCellOffset_[f + 1]; ++k) visit(faceCells_[k]);
     }
 
@@ -116,9 +116,10 @@ public:
 
 private:
     /// The cells of face f's box that its plane crosses: a big slanted face crosses far fewer
-    /// than its box holds.
+    /// than its box holds. Once the grid is filled, `occupiedOnly` leaves out empty cells first,
+    /// with no plane to test.
     template <class Visit>
-    void CellsCrossedBy(int f, Visit visit) const
+    void CellsCrossedBy(int f, Visit visit, bool occupiedOnly = false) const
     {
         if (box_.IsNull() || !BoxesTouch(faceBox_[f], box_)) return;
         const Point3i lo = CellOf(faceBox_[f].min), hi = CellOf(faceBox_[f].max);
@@ -139,9 +140,11 @@ private:
         for (int z = lo[2]; z <= hi[2]; ++z)
             for (int y = lo[1]; y <= hi[1]; ++y)
                 for (int x = lo[0]; x <= hi[0]; ++x) {
+                    const size_t cell = CellIndex(x, y, z);
+                    if (occupiedOnly && cellOffset_[cell] == cellOffset_[cell + 1]) continue;
                     const Point3d center = box_.min + Point3d((x + 0.5) * cellSize_[0], (y + 0.5) * cellSize_[1],
                                                               (z + 0.5) * cellSize_[2]);
-                    if (!testPlane || std::abs(n * (center - corner)) <= reach) visit(int(CellIndex(x, y, z)));
+                    if (!testPlane || std::abs(n * (center - corner)) <= reach) visit(int(cell));
                 }
     }
 
