@@ -99,12 +99,16 @@ inline std::vector<ChainRun> CanonicalChains(const MeshingSurface &s, const std:
 {
     std::vector<ChainRun> chains;
     for (int c = 0; c < s.CellCount(); ++c) {
-        const std::vector<int> at = AnchorPositionsInLoop(s, isAnchor, c);
-        const int m = int(s.cellLoop[c].size());
-        for (size_t k = 0; k < at.size(); ++k) {
-            const int from = at[k], to = k + 1 < at.size() ? at[k + 1] : at[0] + m;
+        const std::vector<int> &loop = s.cellLoop[c];
+        const int m = int(loop.size());
+        const int first = int(std::find_if(loop.begin(), loop.end(), [&](int v) { return isAnchor[v] != 0; }) -
+                              loop.begin());
+        // From each anchor to the next, the last one back to the first (`to` past the end).
+        for (int from = first, to = first + 1; to <= first + m; ++to) {
+            if (!isAnchor[loop[to % m]]) continue;
             const int across = s.cellLoopOther[c][from];
             if (across < 0 || across > c) chains.push_back({c, from, to});
+            from = to;
         }
     }
     return chains;
@@ -241,6 +245,7 @@ inline int CompleteLoop(const MeshingSurface &s, int c, std::vector<char> &isAnc
     const std::vector<int> &loop = s.cellLoop[c];
     const int m = int(loop.size());
     int added = 0;
+    if (std::count_if(loop.begin(), loop.end(), [&](int v) { return isAnchor[v] != 0; }) >= 3) return 0;
     for (std::vector<int> at = AnchorPositionsInLoop(s, isAnchor, c); at.size() < 3 && int(at.size()) < m;
          at = AnchorPositionsInLoop(s, isAnchor, c)) {
         const Point3d &a = s.positions[loop[at[0]]];
