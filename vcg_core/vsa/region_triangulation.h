@@ -188,20 +188,23 @@ public:
         detail::BuildOffsets(interiorOf_, s.CellCount(), interiorOffset_, interior_);
     }
 
-    /// Sorted anchor triples of the three-coloured faces of cell c.
-    std::set<std::array<int, 3>> Triples(int c, const AnchorSet &anchors)
+    /// Anchor triples of the three-coloured faces of cell c, each sorted, in increasing order
+    /// without repeats: looked up by binary search.
+    std::vector<std::array<int, 3>> Triples(int c, const AnchorSet &anchors)
     {
         Flood(c, anchors);
-        std::set<std::array<int, 3>> triples;
+        std::vector<std::array<int, 3>> triples;
         for (int k = s_.cellFaceOffset[c]; k < s_.cellFaceOffset[c + 1]; ++k) {
             const auto &t = s_.faces[s_.cellFaces[k]];
             const std::array<int, 3> colors = {color_[t[0]], color_[t[1]], color_[t[2]]};
             if (colors[0] < 0 || colors[1] < 0 || colors[2] < 0) continue;
             if (colors[0] == colors[1] || colors[1] == colors[2] || colors[2] == colors[0]) continue;
-            triples.insert(OutputRegistry::Sorted({anchors.anchorOfVertex[colors[0]],
-                                                   anchors.anchorOfVertex[colors[1]],
-                                                   anchors.anchorOfVertex[colors[2]]}));
+            triples.push_back(OutputRegistry::Sorted({anchors.anchorOfVertex[colors[0]],
+                                                      anchors.anchorOfVertex[colors[1]],
+                                                      anchors.anchorOfVertex[colors[2]]}));
         }
+        std::sort(triples.begin(), triples.end());
+        triples.erase(std::unique(triples.begin(), triples.end()), triples.end());
         return triples;
     }
 
@@ -387,7 +390,7 @@ class EarClipper
 {
 public:
     EarClipper(const std::vector<int> &polygon, const std::vector<Point3d> &positions, const Point3d &normal,
-               const std::set<std::array<int, 3>> &flooding, const OutputRegistry &registry)
+               const std::vector<std::array<int, 3>> &flooding, const OutputRegistry &registry)
         : polygon_(polygon), positions_(positions), flooding_(flooding), registry_(registry)
     {
         const int n = int(polygon.size());
@@ -420,7 +423,7 @@ public:
             if (best < 0) return false;
             const int p = prev_[best], q = next_[best];
             const std::array<int, 3> t = {polygon_[p], polygon_[best], polygon_[q]};
-            allFromFlooding &= flooding_.count(OutputRegistry::Sorted(t)) != 0;
+            allFromFlooding &= Flooded(t);
             triangles.push_back(t);
             next_[p] = q;
             prev_[q] = p;
@@ -433,7 +436,7 @@ public:
         const int p = prev_[any], q = next_[any];
         const std::array<int, 3> last = {polygon_[p], polygon_[any], polygon_[q]};
         if (registry_.HasFace(last) || Degenerate(last)) return false;
-        allFromFlooding &= flooding_.count(OutputRegistry::Sorted(last)) != 0;
+        allFromFlooding &= Flooded(last);
         triangles.push_back(last);
         return true;
     }
@@ -453,13 +456,18 @@ private:
     static constexpr int kNoEar = std::numeric_limits<int>::max();
     const std::vector<int> &polygon_;
     const std::vector<Point3d> &positions_;
-    const std::set<std::array<int, 3>> &flooding_;
+    const std::vector<std::array<int, 3>> &flooding_;  ///< CellFlooding::Triples
     const OutputRegistry &registry_;
     std::vector<Point2d> plane_;
     double orientation_ = 1;
     std::vector<int> prev_, next_, rank_;
     std::vector<double> quality_;
     int alive_ = 0;
+
+    bool Flooded(const std::array<int, 3> &t) const
+    {
+        return std::binary_search(flooding_.begin(), flooding_.end(), OutputRegistry::Sorted(t));
+    }
 
     bool Degenerate(const std::array<int, 3> &t) const
     {
@@ -477,7 +485,7 @@ private:
         if (registry_.HasEdge(a, c)) return;
         const std::array<int, 3> t = {a, b, c};
         if (Degenerate(t)) return;
-        const bool flooded = flooding_.count(OutputRegistry::Sorted(t)) != 0;
+        const bool flooded = Flooded(t);
         const bool convex = Turn(p, k, q) > 0;
         bool empty = convex;
         Box2d ear;  // a vertex outside the ear's box is outside the ear, with no turn to compute
@@ -505,7 +513,7 @@ inline CellTriangulation TriangulateCell(const MeshingSurface &s, int c, const s
                                          int nextVertex)
 {
     CellTriangulation result;
-    const std::set<std::array<int, 3>> triples = flooding.Triples(c, anchors);
+    const std::vector<std::array<int, 3>> triples = flooding.Triples(c, anchors);
 
     // The plane to clip on: the cell's own area-weighted normal, which follows the input's
     // orientation (an L2 proxy normal may point either way); the proxy's if the cell folds
