@@ -151,18 +151,54 @@ TEST(MeshingRealMeshes, InputFacesOnlyWithinTheFaceBudget)
     EXPECT_EQ(single.repairRounds, 0);
 }
 
-TEST(MeshingRealMeshes, IntersectionsCarriedAcrossPassesAreTheOutputsOwn)
+TEST(MeshingRealMeshes, DefectsCarriedOverAreThoseFoundFromScratch)
 {
-    // Each repair pass tests only the faces that no earlier pass had (matched by their
-    // corners) and carries the others' answers over. Turbine at k=20 runs all its passes with
-    // hundreds of intersecting pairs: the count reported must be that of testing the output.
+    // A repair pass tests only the faces that no earlier pass had (matched by their corners)
+    // and the cells whose polygon changed, and carries the other answers over. Pass after
+    // pass of turbine at k=20 (hundreds of intersecting pairs and some crossings in each),
+    // they must be what testing the pass alone finds, and the count the meshing reports after
+    // all its passes must be that of testing its output.
     IndexedMesh im;
     ApproximationResult partition;
     const std::string error = PartitionSample("turbine.off", 20, SeedingMethod::Farthest, im, partition);
     if (!error.empty()) GTEST_SKIP() << error;
     ASSERT_TRUE(partition.ok) << partition.error;
+    MeshingSurface s;
+    std::string why;
+    ASSERT_TRUE(BuildMeshingSurface(im, partition.partition.faceRegion, partition.proxyCount, s, why)) << why;
+    const std::vector<Proxy> proxies = detail::UsableProxies(s, partition.partition.proxies);
+    const MeshingParam param;
+    detail::ChainSubdivision subdivision(s, proxies, param.chordThreshold,
+                                         detail::ChordDeviationBound(s, proxies, param.chordErrorFactor));
+    std::vector<char> required(s.VertexCount(), 0), pinned(s.VertexCount(), 0), inputCells(s.CellCount(), 0);
+    CellFlooding flooding(s);
+    using Pass = detail::MeshingPass;
+    Pass pass =
+        detail::RunMeshingPass<vcg::Point3f>(s, proxies, param, subdivision, required, pinned, inputCells, flooding);
+    detail::PassDefects defects = detail::FindDefects(pass);
+    auto crossings = [](const detail::PassDefects &d) {
+        std::vector<std::array<int, 3>> all;
+        for (const auto &x : d.crossings) all.push_back({x.cell, x.edge, x.otherEdge});
+        return all;
+    };
+    size_t intersections = 0;
+    for (int round = 1; round <= 6; ++round) {
+        ASSERT_GT(detail::RespondToDefects(s, pass, defects, required, pinned), 0);
+        Pass next = detail::RunMeshingPass<vcg::Point3f>(s, proxies, param, subdivision, required, pinned, inputCells,
+                                                         flooding, &pass);
+        const detail::PassDefects carried = detail::FindDefects(next, &pass, &defects);
+        const detail::PassDefects scratch = detail::FindDefects(next);
+        EXPECT_EQ(carried.intersections, scratch.intersections) << "pass " << round + 1;
+        EXPECT_EQ(crossings(carried), crossings(scratch)) << "pass " << round + 1;
+        EXPECT_GT(scratch.crossings.size(), 0u);
+        intersections += scratch.intersections.size();
+        pass = std::move(next);
+        defects = carried;
+    }
+    EXPECT_GT(intersections, 1000u);
+
     TMesh out;
-    const MeshingReport r = BuildApproximatingMesh(im, partition.partition, MeshingParam(), out);
+    const MeshingReport r = BuildApproximatingMesh(im, partition.partition, param, out);
     ASSERT_TRUE(r.ok) << r.error;
     EXPECT_GT(r.passes, 5);
     EXPECT_GT(r.repairRounds, 0);

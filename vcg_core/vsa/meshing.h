@@ -422,10 +422,30 @@ inline PassDefects FindDefects(const MeshingPass &pass, const MeshingPass *previ
     } else {
         defects.intersections = SelfIntersectingPairs(output, defects.degenerate, {});
     }
-    for (int c = 0; c < int(pass.polygons.size()); ++c)
-        if (pass.cellMethod[c] != CellMethod::InputFaces)  // its own faces: nothing folds
+    // A cell whose polygon has the corner positions and the plane it had in `previous` has the
+    // crossings it had there (they come in cell order).
+    auto samePolygon = [&](int c) {
+        const std::vector<int> &now = pass.polygons[c], &before = previous->polygons[c];
+        if (previous->cellMethod[c] == CellMethod::InputFaces || now.size() != before.size() ||
+            pass.cellNormal[c] != previous->cellNormal[c])
+            return false;
+        for (size_t k = 0; k < now.size(); ++k)
+            if (pass.positions[now[k]] != previous->positions[before[k]]) return false;
+        return true;
+    };
+    size_t known = 0;  // previous crossings of the cells before c
+    for (int c = 0; c < int(pass.polygons.size()); ++c) {
+        const size_t knownFrom = known;
+        while (previous && known < previousDefects->crossings.size() && previousDefects->crossings[known].cell == c)
+            ++known;
+        if (pass.cellMethod[c] == CellMethod::InputFaces) continue;  // its own faces: nothing folds
+        if (previous && samePolygon(c))
+            defects.crossings.insert(defects.crossings.end(), previousDefects->crossings.begin() + knownFrom,
+                                     previousDefects->crossings.begin() + known);
+        else
             for (const auto &[i, j] : CrossingPolygonEdges(pass.polygons[c], pass.positions, pass.cellNormal[c]))
                 defects.crossings.push_back({c, i, j});
+    }
     return defects;
 }
 
