@@ -396,7 +396,8 @@ inline std::vector<int> RepeatedFaces(const MeshingPass &pass, const std::vector
 }
 
 /// The defects of `pass`; given the pass it was derived from and its defects, only the pairs
-/// with a face that is not a repeat of that pass are tested (see RepeatedFaces).
+/// with a face that is not a repeat of that pass are tested (see RepeatedFaces), and only the
+/// cells whose polygon changed are searched for crossings.
 inline PassDefects FindDefects(const MeshingPass &pass, const MeshingPass *previous = nullptr,
                                const PassDefects *previousDefects = nullptr)
 {
