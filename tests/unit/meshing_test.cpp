@@ -861,6 +861,8 @@ TEST(Meshing, PolygonCrossingsAreCarriedOverOnlyForUnchangedPolygons)
     // corners stay where they were.
     auto passWith = [](const std::vector<Point3d> &positions) {
         detail::MeshingPass pass;
+        pass.anchors.vertexOfAnchor = {0, 1, 2, 3};
+        pass.anchors.anchorOfVertex = {0, 1, 2, 3};
         pass.polygons = {{0, 1, 2, 3}};
         pass.positions = positions;
         pass.vertexSource = {0, 1, 2, 3};

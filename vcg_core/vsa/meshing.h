@@ -191,22 +191,30 @@ struct MeshingPass
     std::vector<std::pair<int, int>> cellTriangles;  ///< per cell: its range [first, last) in `triangles`
 };
 
+/// Whether cell c's polygon is the same in `previous` and `pass`: the same input vertices at
+/// the same positions, in the same order.
+inline bool SamePolygon(const MeshingPass &previous, const MeshingPass &pass, int c)
+{
+    const std::vector<int> &before = previous.polygons[c], &now = pass.polygons[c];
+    if (before.size() != now.size()) return false;
+    for (size_t k = 0; k < now.size(); ++k)
+        if (previous.anchors.vertexOfAnchor[before[k]] != pass.anchors.vertexOfAnchor[now[k]] ||
+            previous.positions[before[k]] != pass.positions[now[k]])
+            return false;
+    return true;
+}
+
 /// Cell c's triangles of `previous` on the anchors of `pass`, when its polygon is the same in
-/// both (same input vertices at the same positions), they are on anchors only (no fan, no input
-/// faces) and they clash with nothing already in `registry`; else empty. Re-triangulating only
-/// the cells a repair changed keeps repair rounds cheap on big meshes.
+/// both (SamePolygon), they are on anchors only (no fan, no input faces) and they clash with
+/// nothing already in `registry`; else empty. Re-triangulating only the cells a repair changed
+/// keeps repair rounds cheap on big meshes.
 inline std::vector<std::array<int, 3>> ReusableTriangles(const MeshingPass *previous, const MeshingPass &pass, int c,
                                                           const OutputRegistry &registry)
 {
     if (!previous || previous->cellMethod[c] == CellMethod::SteinerFan ||
-        previous->cellMethod[c] == CellMethod::InputFaces)
+        previous->cellMethod[c] == CellMethod::InputFaces || !SamePolygon(*previous, pass, c))
         return {};
-    const std::vector<int> &before = previous->polygons[c], &now = pass.polygons[c];
-    if (before.size() != now.size()) return {};
-    for (size_t k = 0; k < now.size(); ++k)
-        if (previous->anchors.vertexOfAnchor[before[k]] != pass.anchors.vertexOfAnchor[now[k]] ||
-            previous->positions[before[k]] != pass.positions[now[k]])
-            return {};
+    const std::vector<int> &now = pass.polygons[c];
     OutputRegistry own;  // the polygon's edges are in the registry already, as they should be
     for (size_t k = 0; k < now.size(); ++k) own.AddEdge(now[k], now[(k + 1) % now.size()]);
     std::vector<std::array<int, 3>> triangles;
@@ -423,16 +431,11 @@ inline PassDefects FindDefects(const MeshingPass &pass, const MeshingPass *previ
     } else {
         defects.intersections = SelfIntersectingPairs(output, defects.degenerate, {});
     }
-    // A cell whose polygon has the corner positions and the plane it had in `previous` has the
-    // crossings it had there (they come in cell order).
-    auto samePolygon = [&](int c) {
-        const std::vector<int> &now = pass.polygons[c], &before = previous->polygons[c];
-        if (previous->cellMethod[c] == CellMethod::InputFaces || now.size() != before.size() ||
-            pass.cellNormal[c] != previous->cellNormal[c])
-            return false;
-        for (size_t k = 0; k < now.size(); ++k)
-            if (pass.positions[now[k]] != previous->positions[before[k]]) return false;
-        return true;
+    // A cell with the polygon (SamePolygon) and the plane it had in `previous` has the crossings
+    // it had there (they come in cell order).
+    auto unchanged = [&](int c) {
+        return previous->cellMethod[c] != CellMethod::InputFaces && pass.cellNormal[c] == previous->cellNormal[c] &&
+               SamePolygon(*previous, pass, c);
     };
     size_t known = 0;  // previous crossings of the cells before c
     for (int c = 0; c < int(pass.polygons.size()); ++c) {
@@ -440,7 +443,7 @@ inline PassDefects FindDefects(const MeshingPass &pass, const MeshingPass *previ
         while (previous && known < previousDefects->crossings.size() && previousDefects->crossings[known].cell == c)
             ++known;
         if (pass.cellMethod[c] == CellMethod::InputFaces) continue;  // its own faces: nothing folds
-        if (previous && samePolygon(c))
+        if (previous && unchanged(c))
             defects.crossings.insert(defects.crossings.end(), previousDefects->crossings.begin() + knownFrom,
                                      previousDefects->crossings.begin() + known);
         else
