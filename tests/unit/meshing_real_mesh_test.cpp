@@ -114,10 +114,19 @@ TEST(MeshingRealMeshes, CellsThatKeepIntersectingFallBackToTheirInputFaces)
                   r.regions);
         MeshingParam never;
         never.maxInputFacesGrowth = 0;
+        never.halvingRounds = 0;
         MeshingReport without;
         CheckCase(c, false, never, &without);
         EXPECT_EQ(without.regionsKeptAsInput, 0) << c.mesh;
         EXPECT_GT(without.validity.selfIntersections, 0) << c.mesh;
+        // Halving cells, the step after, removes them too, without input faces.
+        MeshingParam halving;
+        halving.maxInputFacesGrowth = 0;
+        MeshingReport halved;
+        CheckCase(c, false, halving, &halved);
+        EXPECT_EQ(halved.regionsKeptAsInput, 0) << c.mesh;
+        EXPECT_EQ(halved.validity.selfIntersections, 0) << c.mesh;
+        EXPECT_GT(halved.halvingRounds, 0) << c.mesh;
     }
 }
 
@@ -125,10 +134,13 @@ TEST(MeshingRealMeshes, InputFacesOnlyWithinTheFaceBudget)
 {
     // Turbine at k=50 needs more than twice the faces to lose its intersections: by default it
     // keeps them (reported), unbounded it has none.
+    // (Halving cells, the step after, would remove them too.)
     const SweepCase c{"turbine.off", 50, SeedingMethod::Hierarchical};
+    MeshingParam byDefault;
+    byDefault.halvingRounds = 0;
     MeshingReport bounded, unbounded;
-    CheckCase(c, false, MeshingParam(), &bounded);
-    MeshingParam any;
+    CheckCase(c, false, byDefault, &bounded);
+    MeshingParam any = byDefault;
     any.maxInputFacesGrowth = 1e9;
     CheckCase(c, false, any, &unbounded);
     EXPECT_EQ(unbounded.validity.selfIntersections, 0);
@@ -144,7 +156,7 @@ TEST(MeshingRealMeshes, InputFacesOnlyWithinTheFaceBudget)
     EXPECT_EQ(unbounded.passes, bounded.passes + 1);
     EXPECT_EQ(unbounded.repairRounds, bounded.passes);
     MeshingParam once;
-    once.repairRounds = 0;
+    once.repairRounds = 0;  // which also means no halving: intersections are never looked for
     MeshingReport single;
     CheckCase(c, false, once, &single);
     EXPECT_EQ(single.passes, 1);
@@ -198,12 +210,40 @@ TEST(MeshingRealMeshes, DefectsCarriedOverAreThoseFoundFromScratch)
     EXPECT_GT(intersections, 1000u);
 
     TMesh out;
-    const MeshingReport r = BuildApproximatingMesh(im, partition.partition, param, out);
+    MeshingParam keepIntersections;  // (halving cells would remove them: see the next test)
+    keepIntersections.halvingRounds = 0;
+    const MeshingReport r = BuildApproximatingMesh(im, partition.partition, keepIntersections, out);
     ASSERT_TRUE(r.ok) << r.error;
     EXPECT_GT(r.passes, 5);
     EXPECT_GT(r.repairRounds, 0);
     EXPECT_GT(r.validity.selfIntersections, 100);
     EXPECT_EQ(size_t(r.validity.selfIntersections), detail::SelfIntersectingPairs(BuildIndexedMesh(out)).size());
+}
+
+TEST(MeshingRealMeshes, HalvingCellsRemovesIntersectionsThatAnchorsCannot)
+{
+    // Turbine at k=20: regions whose flat triangulations span several curved blades cut
+    // through distant parts of the output; anchor repairs leave hundreds of intersecting pairs
+    // and keeping input faces would need far more than the face budget. Halving the cells of
+    // the intersecting faces, round after round, leaves none: each region stays in the output,
+    // as two or more polygons, and the topology is the input's.
+    for (SeedingMethod init : {SeedingMethod::Random, SeedingMethod::Farthest, SeedingMethod::Hierarchical}) {
+        const SweepCase c{"turbine.off", 20, init};
+        MeshingParam never;
+        never.halvingRounds = 0;
+        MeshingReport without, with;
+        CheckCase(c, false, never, &without);
+        CheckCase(c, false, MeshingParam(), &with);
+        const std::string what = "init " + std::to_string(int(init));
+        EXPECT_GT(without.validity.selfIntersections, 100) << what;
+        EXPECT_EQ(without.halvingRounds, 0) << what;
+        EXPECT_EQ(with.validity.selfIntersections, 0) << what;
+        EXPECT_GT(with.halvingRounds, 0) << what;
+        EXPECT_LE(with.halvingRounds, MeshingParam().halvingRounds) << what;
+        EXPECT_GE(with.cellsHalved, with.halvingRounds) << what;
+        EXPECT_EQ(with.cells, without.cells + with.cellsHalved) << what;
+        EXPECT_EQ(with.regionsCut, without.regionsCut) << what;  // halves are not regions cut into discs
+    }
 }
 
 TEST(MeshingRealMeshes, TheOutputPassIsTheOneWithFewestIntersections)

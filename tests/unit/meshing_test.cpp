@@ -68,6 +68,18 @@ void ExpectNoRegionDropped(const MeshingRun &run, const Partition &partition)
 
 std::vector<Point3d> Positions(const IndexedMesh &m) { return m.positions; }
 
+/// The flat square [-1,1]^2 as a 16 x 16 grid, indexed into `im`, in 3 regions: label(f, r) for
+/// face f whose centroid is at distance r from the centre.
+Partition PartitionFlatSquare(TMesh &square, IndexedMesh &im, const std::function<int(int, double)> &label)
+{
+    vsa_test::MakeFlatSquare(square, 16);
+    im = BuildIndexedMesh(square);
+    return vsa_test::PartitionByRule(im, 3, [&](int f) {
+        const Point3d c = vsa_test::FaceCentroid(im, f);
+        return label(f, std::hypot(c[0], c[1]));
+    });
+}
+
 }  // namespace
 
 TEST(Meshing, CubeSixRegionsGivesTheEightCorners)
@@ -388,11 +400,8 @@ TEST(Meshing, OpenHemisphereKeepsItsBorder)
 TEST(Meshing, IslandAndRingRegionsOnAFlatSquare)
 {
     TMesh square;
-    vsa_test::MakeFlatSquare(square, 16);
-    const IndexedMesh im = BuildIndexedMesh(square);
-    const Partition rings = vsa_test::PartitionByRule(im, 3, [&](int f) {
-        const Point3d c = vsa_test::FaceCentroid(im, f);
-        const double r = std::hypot(c[0], c[1]);
+    IndexedMesh im;
+    const Partition rings = PartitionFlatSquare(square, im, [](int, double r) {
         return r < 0.3 ? 0 : (r < 0.65 ? 1 : 2);  // island, ring around it, the rest
     });
     for (bool polygonal : {false, true}) {
@@ -432,6 +441,67 @@ TEST(Meshing, IslandAndRingRegionsOnAFlatSquare)
             EXPECT_EQ(int(polygons.size()), run.report.cells);
         }
     }
+}
+
+TEST(Meshing, HalvingACellGivesTwoDiscsOfItsRegionAndLeavesTheOthers)
+{
+    // A flat square: a disc region in the middle, a one-face region, and the rest around them.
+    TMesh square;
+    IndexedMesh im;
+    const Partition partition =
+        PartitionFlatSquare(square, im, [](int f, double r) { return f == 0 ? 2 : (r < 0.5 ? 0 : 1); });
+    MeshingSurface s;
+    std::string error;
+    ASSERT_TRUE(BuildMeshingSurface(im, partition.faceRegion, 3, s, error)) << error;
+    auto facesOfCells = [](const MeshingSurface &m) {
+        std::set<std::set<int>> cells;
+        for (int c = 0; c < m.CellCount(); ++c)
+            cells.insert(std::set<int>(m.cellFaces.begin() + m.cellFaceOffset[c],
+                                       m.cellFaces.begin() + m.cellFaceOffset[c + 1]));
+        return cells;
+    };
+    const std::set<std::set<int>> before = facesOfCells(s);
+    int disc = -1, single = -1;
+    for (int c = 0; c < s.CellCount(); ++c) {
+        if (s.cellRegion[c] == 0) disc = c;
+        if (s.cellRegion[c] == 2) single = c;
+    }
+    ASSERT_GE(disc, 0);
+    ASSERT_GE(single, 0);
+    const std::set<int> discFaces(s.cellFaces.begin() + s.cellFaceOffset[disc],
+                                  s.cellFaces.begin() + s.cellFaceOffset[disc + 1]);
+    ASSERT_GT(discFaces.size(), 20u);
+
+    std::vector<char> flagged(s.CellCount(), 0);
+    flagged[disc] = flagged[single] = 1;
+    EXPECT_EQ(HalveCells(s, flagged), 1);  // a cell of one face cannot be halved
+    ASSERT_TRUE(detail::BuildCellsAndLoops(s, error)) << error;
+    const std::set<std::set<int>> after = facesOfCells(s);
+    EXPECT_EQ(after.size(), before.size() + 1);
+    // Every other cell is as it was; the disc's faces are now two cells of region 0, each a
+    // disc (one boundary loop, traced above) with a fair share of the faces.
+    std::set<int> halves;
+    for (int c = 0; c < s.CellCount(); ++c) {
+        const std::set<int> faces(s.cellFaces.begin() + s.cellFaceOffset[c],
+                                  s.cellFaces.begin() + s.cellFaceOffset[c + 1]);
+        if (s.cellRegion[c] != 0) {
+            EXPECT_TRUE(before.count(faces)) << "cell " << c;
+            continue;
+        }
+        EXPECT_GT(faces.size(), discFaces.size() / 4) << "cell " << c;
+        halves.insert(faces.begin(), faces.end());
+        EXPECT_EQ(s.cellLoop[c].size(), s.cellLoopOther[c].size());
+    }
+    EXPECT_EQ(halves, discFaces);
+    EXPECT_EQ(std::count(s.cellRegion.begin(), s.cellRegion.end(), 0), 2);
+
+    // The meshing halves nothing where nothing intersects.
+    MeshingRun run;
+    Mesh(square, partition, MeshingParam(), run);
+    ExpectValidWithInputTopology(run);
+    EXPECT_EQ(run.report.validity.selfIntersections, 0);
+    EXPECT_EQ(run.report.halvingRounds, 0);
+    EXPECT_EQ(run.report.cells, int(before.size()));
 }
 
 TEST(Meshing, ClosedRegionsWithoutBoundary)
@@ -780,8 +850,10 @@ TEST(Meshing, IntersectionsOfTheInputItselfAreNotRepairedWithInputFaces)
     EXPECT_EQ(run.out.FN(), 24);
     EXPECT_GT(run.report.validity.selfIntersections, 0);
     EXPECT_EQ(run.report.regionsKeptAsInput, 0);
-    // The first pass and a repair round that pins the anchors; no pass keeping input faces.
+    // The first pass and a repair round that pins the anchors; no pass keeping input faces, no
+    // halving of cells.
     EXPECT_EQ(run.report.passes, 2);
+    EXPECT_EQ(run.report.halvingRounds, 0);
 }
 
 TEST(Meshing, CrossingPolygonEdgesAreThoseOfTestingEveryPair)

@@ -37,6 +37,7 @@ struct MeshingSurface
     std::vector<std::array<int, 3>> neighbors;  ///< face across edge i (faces[f][i] -> faces[f][i+1]), -1 on border
     std::vector<int> sourceFace;             ///< face -> IndexedMesh face
     std::vector<int> faceRegion;             ///< face -> region (partition label)
+    std::vector<int> facePiece;              ///< face -> piece of its region: no cell spans two (see HalveCells)
     std::vector<int> faceCell;               ///< face -> cell
     std::vector<int> cellRegion;             ///< cell -> region
     std::vector<int> cellFaceOffset, cellFaces;      ///< faces of cell c: cellFaces[cellFaceOffset[c] .. c+1)
@@ -282,7 +283,8 @@ private:
     }
 };
 
-/// Cuts every region into disc cells: region components in order of their lowest face.
+/// Cuts every region into disc cells: components of a region's piece (faces of one region and
+/// one piece, connected through edges) in order of their lowest face.
 inline void BuildCells(MeshingSurface &s)
 {
     const int faceCount = s.FaceCount();
@@ -293,12 +295,12 @@ inline void BuildCells(MeshingSurface &s)
     std::vector<char> seen(faceCount, 0);
     for (int start = 0; start < faceCount; ++start) {
         if (seen[start]) continue;
-        const int region = s.faceRegion[start];
+        const int region = s.faceRegion[start], piece = s.facePiece[start];
         std::vector<int> component = {start};
         seen[start] = 1;
         for (size_t head = 0; head < component.size(); ++head)
             for (int g : s.neighbors[component[head]])
-                if (g >= 0 && !seen[g] && s.faceRegion[g] == region) {
+                if (g >= 0 && !seen[g] && s.faceRegion[g] == region && s.facePiece[g] == piece) {
                     seen[g] = 1;
                     component.push_back(g);
                 }
@@ -407,6 +409,15 @@ inline bool TraceCellLoops(MeshingSurface &s, std::string &error)
     return true;
 }
 
+/// Cuts the regions of `s` into cells along their pieces (s.facePiece), and traces the cells.
+inline bool BuildCellsAndLoops(MeshingSurface &s, std::string &error)
+{
+    BuildCells(s);
+    MeasureCells(s);
+    MarkBoundaryVertices(s);
+    return TraceCellLoops(s, error);
+}
+
 }  // namespace detail
 
 /// Builds the surface the meshing stage walks, or returns false with the reason in `error`.
@@ -470,10 +481,49 @@ inline bool BuildMeshingSurface(const IndexedMesh &im, const std::vector<int> &f
     detail::BuildOffsets(vertexOfCorner, s.VertexCount(), s.vertexFaceOffset, s.vertexFaces);
     for (int &corner : s.vertexFaces) corner /= 3;  // corner index -> face index
 
-    detail::BuildCells(s);
-    detail::MeasureCells(s);
-    detail::MarkBoundaryVertices(s);
-    return detail::TraceCellLoops(s, error);
+    s.facePiece.assign(s.FaceCount(), 0);
+    return detail::BuildCellsAndLoops(s, error);
+}
+
+/// Gives every cell a piece of its own, and each cell flagged in `flagged` two, so that
+/// rebuilding the cells (detail::BuildCellsAndLoops) keeps the others and halves these: into
+/// the faces nearer (in edge hops) to one or the other of two far-apart faces of the cell. The
+/// halves keep the region and its proxy; the cut between them is a boundary chain like any
+/// other, subdivided where it bends. Returns how many cells it halved (a cell of one face
+/// cannot be).
+inline int HalveCells(MeshingSurface &s, const std::vector<char> &flagged)
+{
+    s.facePiece = s.faceCell;
+    int nextPiece = s.CellCount(), halved = 0;
+    std::vector<int> hop(s.FaceCount(), -1), nearest(s.FaceCount(), -1);
+    // The cell's faces in breadth-first order from `seeds`, each with its nearest seed.
+    auto spread = [&](int c, const std::vector<int> &seeds) {
+        std::vector<int> order;
+        for (size_t i = 0; i < seeds.size(); ++i) {
+            hop[seeds[i]] = 0;
+            nearest[seeds[i]] = int(i);
+            order.push_back(seeds[i]);
+        }
+        for (size_t head = 0; head < order.size(); ++head)
+            for (int g : s.neighbors[order[head]])
+                if (g >= 0 && s.faceCell[g] == c && hop[g] < 0) {
+                    hop[g] = hop[order[head]] + 1;
+                    nearest[g] = nearest[order[head]];
+                    order.push_back(g);
+                }
+        for (int f : order) hop[f] = -1;
+        return order;
+    };
+    for (int c = 0; c < s.CellCount(); ++c) {
+        if (!flagged[c] || s.cellFaceOffset[c + 1] - s.cellFaceOffset[c] < 2) continue;
+        const int first = spread(c, {s.cellFaces[s.cellFaceOffset[c]]}).back();
+        const int second = spread(c, {first}).back();
+        for (int f : spread(c, {first, second}))
+            if (nearest[f] == 1) s.facePiece[f] = nextPiece;
+        ++nextPiece;
+        ++halved;
+    }
+    return halved;
 }
 
 }  // namespace vsa

@@ -69,6 +69,13 @@ struct MeshingParam
     /// their input faces, provided that at most multiplies the output's faces by this (0: never).
     /// Beyond that the output keeps its intersections, reported: k is too small for the shape.
     double maxInputFacesGrowth = 2;
+    /// When self-intersections remain after all that, the cells of the intersecting faces are
+    /// halved (see HalveCells) and meshed again, at most this many times: a region whose flat
+    /// triangulation spans a curved part of the shape (turbine's blades at k=20) cuts through
+    /// distant parts of the output, which more anchors on its outline cannot fix, while its
+    /// halves follow the shape more closely. Each halving costs a meshing. 0: never (and so does
+    /// repairRounds = 0, which looks for no intersections).
+    int halvingRounds = 8;
 };
 
 struct MeshingReport
@@ -84,6 +91,8 @@ struct MeshingReport
     int regionsKeptAsInput = 0;        ///< kept (in part) at the input's resolution against self-intersections
     int regionsCut = 0;                ///< not a disc (ring, islands, handle, closed, disconnected): cut into discs
     int cells = 0;                     ///< discs triangulated (regions, or their pieces)
+    int cellsHalved = 0;    ///< cells halved on the way to the output (see MeshingParam::halvingRounds)
+    int halvingRounds = 0;  ///< rounds of halving the output took
 
     int anchors = 0;
     int junctionAnchors = 0;     ///< where three regions (or cells) meet, the border counting as one
@@ -123,6 +132,8 @@ struct MeshingReport
         if (regionsWithSteinerVertex) s << ", fan around an extra vertex " << regionsWithSteinerVertex;
         if (regionsKeptAsInput) s << ", kept as input faces against self-intersections " << regionsKeptAsInput;
         if (regionsCut) s << "; " << regionsCut << " regions cut into discs";
+        if (halvingRounds)
+            s << "; " << cellsHalved << " cells halved against self-intersections (" << halvingRounds << " rounds)";
         if (emptyRegions) s << "; " << emptyRegions << " empty proxies";
         if (ignoredFaces) s << "; " << ignoredFaces << " input faces with a repeated vertex ignored";
         if (splitVertices) s << "; non-manifold input vertices split into " << splitVertices << " extra vertices";
@@ -142,6 +153,13 @@ namespace detail {
 /// 4 rounds, or 1.5 times, lost one.
 constexpr int kRepairPatience = 5;
 constexpr size_t kRepairDivergence = 2;
+
+/// Halving rounds give up after this many rounds in a row without fewer intersecting pairs:
+/// what remains then is mostly where the input intersects itself, or near it. On the 7 cases of
+/// the 60-case sweep and the 19 of CGAL's sample meshes (k=50, three seedings) that halving
+/// acts on, one run improved later than that: "man" (hierarchical), whose input has 848
+/// intersecting pairs, went from 574 to 602, 603, 603, 622, then 564 and 525 after 6 rounds.
+constexpr int kHalvingPatience = 2;
 
 /// Proxies usable as planes: unit normals, finite points. A proxy given without a usable
 /// plane gets its region's area-weighted plane instead (nothing downstream divides by it).
@@ -576,6 +594,128 @@ inline bool WritesPass(const IndexedMesh &written, const MeshingPass &pass)
     return true;
 }
 
+/// The best of the passes over the cells of one surface (see MeshCells).
+struct MeshingAttempt
+{
+    MeshingPass pass;
+    PassDefects defects;  ///< those of `pass`
+    int repairRound = 0;  ///< the pass's round, the first pass counting as 0
+};
+
+/// Where the input itself intersects, looked for only in the cells that need to know (those
+/// of intersecting output faces, which neither keeping input faces nor halving can mend
+/// there): testing the whole input costs more than a pass. Input faces tested stay known
+/// from one surface to the next.
+class InputIntersections
+{
+public:
+    explicit InputIntersections(const IndexedMesh &in)
+        : in_(in), tested_(in.FaceCount(), 0), intersecting_(in.FaceCount(), 0)
+    {
+    }
+
+    /// Per cell of `s`: whether it is flagged in `cells` and has an input face that intersects
+    /// another input face.
+    std::vector<char> CellsAmong(const MeshingSurface &s, const std::vector<char> &cells)
+    {
+        std::vector<char> fresh(in_.FaceCount(), 0);
+        bool any = false;
+        for (int f = 0; f < s.FaceCount(); ++f) {
+            const int source = s.sourceFace[f];
+            if (cells[s.faceCell[f]] && !tested_[source]) fresh[source] = tested_[source] = 1, any = true;
+        }
+        if (any)
+            for (const auto &[f, g] : SelfIntersectingPairs(in_, fresh)) intersecting_[f] = intersecting_[g] = 1;
+        std::vector<char> found(s.CellCount(), 0);
+        for (int f = 0; f < s.FaceCount(); ++f)
+            if (cells[s.faceCell[f]] && intersecting_[s.sourceFace[f]]) found[s.faceCell[f]] = 1;
+        return found;
+    }
+
+private:
+    const IndexedMesh &in_;
+    std::vector<char> tested_, intersecting_;  ///< per input face
+};
+
+/// Meshes the cells of `s`: a first pass, repair passes, and the last resort of keeping input
+/// faces; returns the best pass (see PassDefects::BetterThan; the earliest on ties) and adds
+/// the passes run to `passes`.
+template <class CoordType>
+MeshingAttempt MeshCells(const MeshingSurface &s, const std::vector<Proxy> &proxies, const MeshingParam &param,
+                         InputIntersections &inputIntersections, int &passes, vcg::CallBackPos *cb)
+{
+    ChordGapTest gapTest(s.positions, s.faces, param.chordGapThreshold);
+    ChainSubdivision subdivision(s, proxies, param.chordThreshold,
+                                 ChordDeviationBound(s, proxies, param.chordErrorFactor),
+                                 param.chordGapThreshold > 0 ? &gapTest : nullptr);
+
+    if (cb) cb(20, "VSA meshing: anchors and triangulation");
+    // Passes: each one responds to the defects of the previous one (see RespondToDefects);
+    // the best pass (see PassDefects::BetterThan; the earliest on ties) is the output.
+    std::vector<char> requiredAnchors(s.VertexCount(), 0), pinnedAnchors(s.VertexCount(), 0);
+    std::vector<char> inputCells(s.CellCount(), 0);
+    CellFlooding flooding(s);
+    MeshingAttempt best;
+    MeshingPass &pass = best.pass;
+    PassDefects &passDefects = best.defects;
+    pass = RunMeshingPass<CoordType>(s, proxies, param, subdivision, requiredAnchors, pinnedAnchors, inputCells,
+                                     flooding);
+    ++passes;
+    PassDefects defects;
+    if (param.repairRounds > 0) defects = FindDefects(pass);
+    passDefects = defects;  // always those of `pass`
+    MeshingPass latest;
+    int round = 1;
+    for (; round <= param.repairRounds && defects.Count() > 0; ++round) {
+        if (round - 1 - best.repairRound >= kRepairPatience &&
+            defects.Count() >= kRepairDivergence * passDefects.Count())
+            break;
+        if (cb) cb(20 + 50 * round / (2 * param.repairRounds + 1), "VSA meshing: repairing folds and self-intersections");
+        const MeshingPass &previous = round == 1 ? pass : latest;
+        if (RespondToDefects(s, previous, defects, requiredAnchors, pinnedAnchors) == 0) break;
+        MeshingPass next = RunMeshingPass<CoordType>(s, proxies, param, subdivision, requiredAnchors, pinnedAnchors,
+                                                     inputCells, flooding, &previous);
+        ++passes;
+        defects = FindDefects(next, &previous, &defects);
+        latest = std::move(next);
+        if (defects.BetterThan(passDefects)) {
+            passDefects = defects;
+            pass = latest;
+            best.repairRound = round;
+        }
+    }
+    // Last resort, from the best pass: cells of intersecting faces keep their input faces, until
+    // none is left; except cells where the input itself intersects, which that cannot help.
+    if (!passDefects.intersections.empty() && param.maxInputFacesGrowth > 0 &&
+        FacesKeepingInput(s, pass, passDefects) <= param.maxInputFacesGrowth * double(pass.triangles.size())) {
+        // It costs faces: taken only when it leaves fewer intersecting pairs within the budget.
+        size_t fewestIntersections = passDefects.intersections.size();
+        const double faceBudget = param.maxInputFacesGrowth * double(pass.triangles.size());
+        defects = passDefects;
+        latest = pass;
+        for (int last = round + param.repairRounds; round < last && !defects.intersections.empty(); ++round) {
+            if (cb) cb(20 + 50 * round / (2 * param.repairRounds + 1), "VSA meshing: keeping input faces against self-intersections");
+            const std::vector<char> flagged = CellsOfIntersectingFaces(s, latest, defects);
+            if (KeepInputFacesOfCells(s, flagged, inputIntersections.CellsAmong(s, flagged), requiredAnchors,
+                                      pinnedAnchors, inputCells) == 0)
+                break;
+            MeshingPass next = RunMeshingPass<CoordType>(
+                s, proxies, param, subdivision, requiredAnchors, pinnedAnchors, inputCells, flooding, &latest);
+            ++passes;
+            if (double(next.triangles.size()) > faceBudget) break;  // and it only grows
+            defects = FindDefects(next, &latest, &defects);
+            latest = std::move(next);
+            if (defects.intersections.size() < fewestIntersections) {
+                fewestIntersections = defects.intersections.size();
+                passDefects = defects;
+                pass = latest;
+                best.repairRound = round;
+            }
+        }
+    }
+    return best;
+}
+
 }  // namespace detail
 
 /// Builds the approximating mesh of a partitioned mesh into `out` (cleared first).
@@ -608,100 +748,52 @@ MeshingReport BuildApproximatingMesh(const IndexedMesh &in, const Partition &par
         if (r < 0 || r >= regionCount)
             return fail("a face has region " + std::to_string(r) + ", outside [0, " + std::to_string(regionCount) + ")");
     if (!(param.chordThreshold >= 0) || !(param.chordGapThreshold >= 0) || !(param.chordErrorFactor >= 0) ||
-        !(param.maxAnchorMove >= 0) || param.repairRounds < 0 || !(param.maxInputFacesGrowth >= 0))
-        return fail("chordThreshold, chordGapThreshold, chordErrorFactor, maxAnchorMove, repairRounds and "
-                    "maxInputFacesGrowth must be non-negative");
+        !(param.maxAnchorMove >= 0) || param.repairRounds < 0 || !(param.maxInputFacesGrowth >= 0) ||
+        param.halvingRounds < 0)
+        return fail("chordThreshold, chordGapThreshold, chordErrorFactor, maxAnchorMove, repairRounds, "
+                    "maxInputFacesGrowth and halvingRounds must be non-negative");
 
     if (cb) cb(0, "VSA meshing: cutting regions into discs");
     MeshingSurface s;
     if (!BuildMeshingSurface(in, partition.faceRegion, regionCount, s, report.error)) return report;
     report.ignoredFaces = s.ignoredFaces;
     report.splitVertices = s.splitVertices;
-    const std::vector<Proxy> proxies = detail::UsableProxies(s, partition.proxies);
-    detail::ChordGapTest gapTest(s.positions, s.faces, param.chordGapThreshold);
-    detail::ChainSubdivision subdivision(s, proxies, param.chordThreshold,
-                                         detail::ChordDeviationBound(s, proxies, param.chordErrorFactor),
-                                         param.chordGapThreshold > 0 ? &gapTest : nullptr);
-
-    if (cb) cb(20, "VSA meshing: anchors and triangulation");
-    // Passes: each one responds to the defects of the previous one (see RespondToDefects);
-    // the best pass (see PassDefects::BetterThan; the earliest on ties) is the output.
-    std::vector<char> requiredAnchors(s.VertexCount(), 0), pinnedAnchors(s.VertexCount(), 0);
-    std::vector<char> inputCells(s.CellCount(), 0);
-    CellFlooding flooding(s);
-    detail::MeshingPass pass =
-        detail::RunMeshingPass<CoordType>(s, proxies, param, subdivision, requiredAnchors, pinnedAnchors, inputCells,
-                                          flooding);
-    report.passes = 1;
-    detail::PassDefects defects;
-    if (param.repairRounds > 0) defects = detail::FindDefects(pass);
-    detail::PassDefects passDefects = defects;  // always those of `pass`
-    detail::MeshingPass latest;
-    int round = 1;
-    for (; round <= param.repairRounds && defects.Count() > 0; ++round) {
-        if (round - 1 - report.repairRounds >= detail::kRepairPatience &&
-            defects.Count() >= detail::kRepairDivergence * passDefects.Count())
-            break;
-        if (cb) cb(20 + 50 * round / (2 * param.repairRounds + 1), "VSA meshing: repairing folds and self-intersections");
-        const detail::MeshingPass &previous = round == 1 ? pass : latest;
-        if (detail::RespondToDefects(s, previous, defects, requiredAnchors, pinnedAnchors) == 0) break;
-        detail::MeshingPass next = detail::RunMeshingPass<CoordType>(s, proxies, param, subdivision, requiredAnchors,
-                                                                     pinnedAnchors, inputCells, flooding, &previous);
-        ++report.passes;
-        defects = detail::FindDefects(next, &previous, &defects);
-        latest = std::move(next);
-        if (defects.BetterThan(passDefects)) {
-            passDefects = defects;
-            pass = latest;
-            report.repairRounds = round;
-        }
-    }
-    // Last resort, from the best pass: cells of intersecting faces keep their input faces, until
-    // none is left; except cells where the input itself intersects, which that cannot help.
-    if (!passDefects.intersections.empty() && param.maxInputFacesGrowth > 0 &&
-        detail::FacesKeepingInput(s, pass, passDefects) <= param.maxInputFacesGrowth * double(pass.triangles.size())) {
-        // Where the input intersects is looked for only in the cells this step considers:
-        // testing the whole input costs more than a pass.
-        std::vector<char> intersectingInput(s.CellCount(), 0), inputTested(s.CellCount(), 0);
-        std::vector<int> cellOfInputFace(in.FaceCount(), -1);
-        for (int f = 0; f < s.FaceCount(); ++f) cellOfInputFace[s.sourceFace[f]] = s.faceCell[f];
-        auto testInputOf = [&](const std::vector<char> &cells) {
-            std::vector<char> faces(in.FaceCount(), 0);
-            bool any = false;
-            for (int f = 0; f < s.FaceCount(); ++f)
-                if (cells[s.faceCell[f]] && !inputTested[s.faceCell[f]]) faces[s.sourceFace[f]] = 1, any = true;
-            if (!any) return;
-            for (int c = 0; c < s.CellCount(); ++c) inputTested[c] |= cells[c];
-            for (const auto &[f, g] : detail::SelfIntersectingPairs(in, faces))
-                for (int c : {cellOfInputFace[f], cellOfInputFace[g]})
-                    if (c >= 0) intersectingInput[c] = 1;
-        };
-        // It costs faces: taken only when it leaves fewer intersecting pairs within the budget.
-        size_t fewestIntersections = passDefects.intersections.size();
-        const double faceBudget = param.maxInputFacesGrowth * double(pass.triangles.size());
-        defects = passDefects;
-        latest = pass;
-        for (int last = round + param.repairRounds; round < last && !defects.intersections.empty(); ++round) {
-            if (cb) cb(20 + 50 * round / (2 * param.repairRounds + 1), "VSA meshing: keeping input faces against self-intersections");
-            const std::vector<char> flagged = detail::CellsOfIntersectingFaces(s, latest, defects);
-            testInputOf(flagged);
-            if (detail::KeepInputFacesOfCells(s, flagged, intersectingInput, requiredAnchors, pinnedAnchors,
-                                              inputCells) == 0)
-                break;
-            detail::MeshingPass next = detail::RunMeshingPass<CoordType>(
-                s, proxies, param, subdivision, requiredAnchors, pinnedAnchors, inputCells, flooding, &latest);
-            ++report.passes;
-            if (double(next.triangles.size()) > faceBudget) break;  // and it only grows
-            defects = detail::FindDefects(next, &latest, &defects);
-            latest = std::move(next);
-            if (defects.intersections.size() < fewestIntersections) {
-                fewestIntersections = defects.intersections.size();
-                passDefects = defects;
-                pass = latest;
-                report.repairRounds = round;
+    std::vector<int> regionCells(regionCount, 0);  // before any halving (see regionsCut)
+    for (int r : s.cellRegion) ++regionCells[r];
+    detail::InputIntersections inputIntersections(in);
+    detail::MeshingAttempt best = detail::MeshCells<CoordType>(s, detail::UsableProxies(s, partition.proxies), param,
+                                                               inputIntersections, report.passes, cb);
+    // Cells whose flat triangulation still cuts through the output are halved, and meshed
+    // again, from the latest attempt; the output is the attempt with the fewest intersecting
+    // pairs (the earliest on ties).
+    if (param.halvingRounds > 0 && !best.defects.intersections.empty()) {
+        MeshingSurface halved = s;
+        std::vector<char> flagged = detail::CellsOfIntersectingFaces(s, best.pass, best.defects);
+        int halvedSoFar = 0;
+        for (int round = 1; round <= param.halvingRounds; ++round) {
+            if (cb) cb(70, "VSA meshing: halving cells against self-intersections");
+            const std::vector<char> intersectingInput = inputIntersections.CellsAmong(halved, flagged);
+            for (int c = 0; c < halved.CellCount(); ++c) flagged[c] &= !intersectingInput[c];
+            const int cellsHalved = HalveCells(halved, flagged);
+            std::string internalError;  // cells grown as discs always trace: keep the best output, if not
+            if (cellsHalved == 0 || !detail::BuildCellsAndLoops(halved, internalError)) break;
+            halvedSoFar += cellsHalved;
+            detail::MeshingAttempt attempt =
+                detail::MeshCells<CoordType>(halved, detail::UsableProxies(halved, partition.proxies), param,
+                                             inputIntersections, report.passes, cb);
+            flagged = detail::CellsOfIntersectingFaces(halved, attempt.pass, attempt.defects);
+            if (attempt.defects.intersections.size() < best.defects.intersections.size()) {
+                best = std::move(attempt);
+                s = halved;
+                report.halvingRounds = round;
+                report.cellsHalved = halvedSoFar;
             }
+            if (best.defects.intersections.empty() || round - report.halvingRounds >= detail::kHalvingPatience) break;
         }
     }
+    const detail::MeshingPass &pass = best.pass;
+    const detail::PassDefects &passDefects = best.defects;
+    report.repairRounds = best.repairRound;
     report.repairAnchors = pass.anchors.required;
     report.pinnedAnchors = param.projectAnchors ? pass.pinnedAnchors : 0;
     const AnchorSet &anchors = pass.anchors;
@@ -713,11 +805,10 @@ MeshingReport BuildApproximatingMesh(const IndexedMesh &in, const Partition &par
     report.duplicateChordAnchors = anchors.chordDuplicates;
     report.steinerVertices = int(pass.positions.size()) - anchors.Count();
     report.cells = s.CellCount();
-    std::vector<int> regionMethod(regionCount, -1), regionCells(regionCount, 0);
+    std::vector<int> regionMethod(regionCount, -1);
     for (int c = 0; c < s.CellCount(); ++c) {
         const int region = s.cellRegion[c];
         regionMethod[region] = std::max(regionMethod[region], int(pass.cellMethod[c]));
-        ++regionCells[region];
     }
     for (int r = 0; r < regionCount; ++r) {
         if (regionMethod[r] < 0) {
