@@ -50,12 +50,14 @@ void Describe(const vsa::ShapeApproximationResult &r, const VsaFilterSettings &s
                .arg(m.validity.vertices)
                .arg(m.anchors);
     log << QString("VSA: regions meshed by flooding %1, by ear-clipping fallback %2, with an extra vertex %3, "
-                   "kept as input faces against self-intersections %4, cut into discs %5")
+                   "kept as input faces against self-intersections %4, cut into discs %5; "
+                   "cells halved against self-intersections %6")
                .arg(m.regionsByFlooding)
                .arg(m.regionsByEarClipping)
                .arg(m.regionsWithSteinerVertex)
                .arg(m.regionsKeptAsInput)
-               .arg(m.regionsCut);
+               .arg(m.regionsCut)
+               .arg(m.cellsHalved);
     log << QString("VSA: output: %1").arg(QString::fromStdString(m.validity.Summary()));
     log << QString("VSA: time: seeding %1 s, iterations %2 s, meshing %3 s (%5), total %4 s")
                .arg(r.secondsSeeding, 0, 'f', 3)
@@ -74,6 +76,7 @@ void Describe(const vsa::ShapeApproximationResult &r, const VsaFilterSettings &s
     f["anchors"] = m.anchors;
     f["regions_fallback"] = m.regionsByEarClipping + m.regionsWithSteinerVertex + m.regionsKeptAsInput;
     f["regions_kept_as_input"] = m.regionsKeptAsInput;
+    f["cells_halved"] = m.cellsHalved;
     f["manifold"] = m.validity.IsTwoManifold();
     f["closed"] = m.validity.IsClosed();
     f["oriented"] = m.validity.IsOriented();
