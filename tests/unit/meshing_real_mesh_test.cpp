@@ -100,41 +100,69 @@ TEST(MeshingRealMeshes, ClosedAndOpenMeshesStayValid)
         CheckCase(c, false);
 }
 
-TEST(MeshingRealMeshes, CellsThatKeepIntersectingFallBackToTheirInputFaces)
+TEST(MeshingRealMeshes, HalvingComesBeforeInputFaces)
 {
-    // At these k the anchor repairs alone leave self-intersections; keeping the offending
-    // regions' own input faces removes them (the inputs are clean) within the face budget.
+    // At these k the anchor repairs alone leave self-intersections (the inputs are clean).
+    // Halving the offending cells removes them, and no region is kept as input faces; without
+    // halving, keeping those regions' input faces removes them within the face budget, at the
+    // cost of more faces; without either, they remain.
     for (const SweepCase &c : {SweepCase{"couplingdown.off", 50, SeedingMethod::Hierarchical},
                                SweepCase{"helmet.off", 20, SeedingMethod::Hierarchical}}) {
-        MeshingReport r;
-        CheckCase(c, false, MeshingParam(), &r);
-        EXPECT_GT(r.regionsKeptAsInput, 0) << c.mesh;
-        EXPECT_EQ(r.validity.selfIntersections, 0) << c.mesh;
-        EXPECT_EQ(r.regionsByFlooding + r.regionsByEarClipping + r.regionsWithSteinerVertex + r.regionsKeptAsInput,
-                  r.regions);
-        MeshingParam never;
-        never.maxInputFacesGrowth = 0;
-        never.halvingRounds = 0;
-        MeshingReport without;
-        CheckCase(c, false, never, &without);
-        EXPECT_EQ(without.regionsKeptAsInput, 0) << c.mesh;
-        EXPECT_GT(without.validity.selfIntersections, 0) << c.mesh;
-        // Halving cells, the step after, removes them too, without input faces.
-        MeshingParam halving;
-        halving.maxInputFacesGrowth = 0;
         MeshingReport halved;
-        CheckCase(c, false, halving, &halved);
-        EXPECT_EQ(halved.regionsKeptAsInput, 0) << c.mesh;
+        CheckCase(c, false, MeshingParam(), &halved);
         EXPECT_EQ(halved.validity.selfIntersections, 0) << c.mesh;
         EXPECT_GT(halved.halvingRounds, 0) << c.mesh;
+        EXPECT_EQ(halved.regionsKeptAsInput, 0) << c.mesh;
+
+        MeshingParam noHalving;
+        noHalving.halvingRounds = 0;
+        MeshingReport kept;
+        CheckCase(c, false, noHalving, &kept);
+        EXPECT_EQ(kept.validity.selfIntersections, 0) << c.mesh;
+        EXPECT_GT(kept.regionsKeptAsInput, 0) << c.mesh;
+        EXPECT_EQ(kept.regionsByFlooding + kept.regionsByEarClipping + kept.regionsWithSteinerVertex +
+                      kept.regionsKeptAsInput,
+                  kept.regions);
+        EXPECT_LT(halved.validity.faces, kept.validity.faces) << c.mesh;
+
+        MeshingParam neither = noHalving;
+        neither.maxInputFacesGrowth = 0;
+        MeshingReport without;
+        CheckCase(c, false, neither, &without);
+        EXPECT_EQ(without.regionsKeptAsInput, 0) << c.mesh;
+        EXPECT_GT(without.validity.selfIntersections, 0) << c.mesh;
     }
+}
+
+TEST(MeshingRealMeshes, InputFacesFinishWhatHalvingLeaves)
+{
+    // b9_mesh at k=50: the repairs leave hundreds of intersecting pairs, too many regions for
+    // the face budget of input faces; halving removes all but a few, and input faces of the
+    // regions concerned, now within the budget, the rest.
+    const SweepCase c{"b9_mesh.off", 50, SeedingMethod::Hierarchical};
+    MeshingReport both, halvingOnly, inputFacesOnly;
+    CheckCase(c, false, MeshingParam(), &both);
+    MeshingParam noInputFaces;
+    noInputFaces.maxInputFacesGrowth = 0;
+    CheckCase(c, false, noInputFaces, &halvingOnly);
+    MeshingParam noHalving;
+    noHalving.halvingRounds = 0;
+    CheckCase(c, false, noHalving, &inputFacesOnly);
+    EXPECT_GT(inputFacesOnly.validity.selfIntersections, 100);
+    EXPECT_EQ(inputFacesOnly.regionsKeptAsInput, 0);
+    EXPECT_GT(halvingOnly.validity.selfIntersections, 0);
+    EXPECT_LT(halvingOnly.validity.selfIntersections, 10);
+    EXPECT_GT(halvingOnly.halvingRounds, 0);
+    EXPECT_EQ(both.validity.selfIntersections, 0);
+    EXPECT_GT(both.halvingRounds, 0);
+    EXPECT_GT(both.regionsKeptAsInput, 0);
 }
 
 TEST(MeshingRealMeshes, InputFacesOnlyWithinTheFaceBudget)
 {
     // Turbine at k=50 needs more than twice the faces to lose its intersections: by default it
     // keeps them (reported), unbounded it has none.
-    // (Halving cells, the step after, would remove them too.)
+    // (Halving cells, the step before, would remove them too.)
     const SweepCase c{"turbine.off", 50, SeedingMethod::Hierarchical};
     MeshingParam byDefault;
     byDefault.halvingRounds = 0;

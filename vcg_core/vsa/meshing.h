@@ -17,6 +17,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 #include <sstream>
 #include <string>
 #include <type_traits>
@@ -65,17 +66,18 @@ struct MeshingParam
     /// k=50, 4 rounds left 13 outputs with self-intersections, 12 left 7, for a few ms each.
     /// A repair that diverges stops early (see kRepairPatience).
     int repairRounds = 12;
-    /// Last resort, when those passes leave self-intersections: the regions concerned keep
-    /// their input faces, provided that at most multiplies the output's faces by this (0: never).
-    /// Beyond that the output keeps its intersections, reported: k is too small for the shape.
-    double maxInputFacesGrowth = 2;
-    /// When self-intersections remain after all that, the cells of the intersecting faces are
+    /// When those passes leave self-intersections, the cells of the intersecting faces are
     /// halved (see HalveCells) and meshed again, at most this many times: a region whose flat
     /// triangulation spans a curved part of the shape (turbine's blades at k=20) cuts through
     /// distant parts of the output, which more anchors on its outline cannot fix, while its
     /// halves follow the shape more closely. Each halving costs a meshing. 0: never (and so does
     /// repairRounds = 0, which looks for no intersections).
     int halvingRounds = 8;
+    /// Last resort, when halving leaves self-intersections: the regions concerned keep their
+    /// input faces, provided that at most multiplies the output's faces by this (0: never).
+    /// Beyond that the output keeps its intersections, reported: k is too small for the shape,
+    /// or the input intersects itself there.
+    double maxInputFacesGrowth = 2;
 };
 
 struct MeshingReport
@@ -595,14 +597,6 @@ inline bool WritesPass(const IndexedMesh &written, const MeshingPass &pass)
     return true;
 }
 
-/// The best of the passes over the cells of one surface (see MeshCells).
-struct MeshingAttempt
-{
-    MeshingPass pass;
-    PassDefects defects;  ///< those of `pass`
-    int repairRound = 0;  ///< the pass's round, the first pass counting as 0
-};
-
 /// Where the input itself intersects, looked for only in the cells that need to know (those
 /// of intersecting output faces, which neither keeping input faces nor halving can mend
 /// there): testing the whole input costs more than a pass. Input faces tested stay known
@@ -638,84 +632,125 @@ private:
     std::vector<char> tested_, intersecting_;  ///< per input face
 };
 
-/// Meshes the cells of `s`: a first pass, repair passes, and the last resort of keeping input
-/// faces; returns the best pass (see PassDefects::BetterThan; the earliest on ties) and adds
-/// the passes run to `passes`.
+/// The passes over the cells of one surface (see BuildApproximatingMesh): a first pass and
+/// repair passes (Repair), then, if need be, the last resort of keeping input faces
+/// (KeepInputFaces), each pass responding to the defects of the one before. Best() is the best
+/// pass so far (see PassDefects::BetterThan; the earliest on ties). Passes run are added to
+/// `passes`. Holds references to `s`, `param`, `inputIntersections` and `passes`; not movable, as its
+/// chord subdivision points into it.
 template <class CoordType>
-MeshingAttempt MeshCells(const MeshingSurface &s, const std::vector<Proxy> &proxies, const MeshingParam &param,
-                         InputIntersections &inputIntersections, int &passes, vcg::CallBackPos *cb)
+class CellMesher
 {
-    ChordGapTest gapTest(s.positions, s.faces, param.chordGapThreshold);
-    ChainSubdivision subdivision(s, proxies, param.chordThreshold,
-                                 ChordDeviationBound(s, proxies, param.chordErrorFactor),
-                                 param.chordGapThreshold > 0 ? &gapTest : nullptr);
+public:
+    /// The best pass so far, its defects and its round (the first pass counting as 0).
+    struct Attempt
+    {
+        MeshingPass pass;
+        PassDefects defects;
+        int repairRound = 0;
+    };
 
-    if (cb) cb(20, "VSA meshing: anchors and triangulation");
-    // Passes: each one responds to the defects of the previous one (see RespondToDefects);
-    // the best pass (see PassDefects::BetterThan; the earliest on ties) is the output.
-    std::vector<char> requiredAnchors(s.VertexCount(), 0), pinnedAnchors(s.VertexCount(), 0);
-    std::vector<char> inputCells(s.CellCount(), 0);
-    CellFlooding flooding(s);
-    MeshingAttempt best;
-    MeshingPass &pass = best.pass;
-    PassDefects &passDefects = best.defects;
-    pass = RunMeshingPass<CoordType>(s, proxies, param, subdivision, requiredAnchors, pinnedAnchors, inputCells,
-                                     flooding);
-    ++passes;
-    PassDefects defects;
-    if (param.repairRounds > 0) defects = FindDefects(pass);
-    passDefects = defects;  // always those of `pass`
-    MeshingPass latest;
-    int round = 1;
-    for (; round <= param.repairRounds && defects.Count() > 0; ++round) {
-        if (round - 1 - best.repairRound >= kRepairPatience &&
-            defects.Count() >= kRepairDivergence * passDefects.Count())
-            break;
-        if (cb) cb(20 + 50 * round / (2 * param.repairRounds + 1), "VSA meshing: repairing folds and self-intersections");
-        const MeshingPass &previous = round == 1 ? pass : latest;
-        if (RespondToDefects(s, previous, defects, requiredAnchors, pinnedAnchors) == 0) break;
-        MeshingPass next = RunMeshingPass<CoordType>(s, proxies, param, subdivision, requiredAnchors, pinnedAnchors,
-                                                     inputCells, flooding, &previous);
-        ++passes;
-        defects = FindDefects(next, &previous, &defects);
-        latest = std::move(next);
-        if (defects.BetterThan(passDefects)) {
-            passDefects = defects;
-            pass = latest;
-            best.repairRound = round;
-        }
+    CellMesher(const MeshingSurface &s, std::vector<Proxy> proxies, const MeshingParam &param,
+               InputIntersections &inputIntersections, int &passes, vcg::CallBackPos *cb)
+        : s_(s), proxies_(std::move(proxies)), param_(param), inputIntersections_(inputIntersections),
+          passes_(passes), cb_(cb), gapTest_(s.positions, s.faces, param.chordGapThreshold),
+          subdivision_(s, proxies_, param.chordThreshold, ChordDeviationBound(s, proxies_, param.chordErrorFactor),
+                       param.chordGapThreshold > 0 ? &gapTest_ : nullptr),
+          requiredAnchors_(s.VertexCount(), 0), pinnedAnchors_(s.VertexCount(), 0), inputCells_(s.CellCount(), 0),
+          flooding_(s)
+    {
     }
-    // Last resort, from the best pass: cells of intersecting faces keep their input faces, until
-    // none is left; except cells where the input itself intersects, which that cannot help.
-    if (!passDefects.intersections.empty() && param.maxInputFacesGrowth > 0 &&
-        FacesKeepingInput(s, pass, passDefects) <= param.maxInputFacesGrowth * double(pass.triangles.size())) {
-        // It costs faces: taken only when it leaves fewer intersecting pairs within the budget.
-        size_t fewestIntersections = passDefects.intersections.size();
-        const double faceBudget = param.maxInputFacesGrowth * double(pass.triangles.size());
-        defects = passDefects;
-        latest = pass;
-        for (int last = round + param.repairRounds; round < last && !defects.intersections.empty(); ++round) {
-            if (cb) cb(20 + 50 * round / (2 * param.repairRounds + 1), "VSA meshing: keeping input faces against self-intersections");
-            const std::vector<char> flagged = CellsOfIntersectingFaces(s, latest, defects);
-            if (KeepInputFacesOfCells(s, flagged, inputIntersections.CellsAmong(s, flagged), requiredAnchors,
-                                      pinnedAnchors, inputCells) == 0)
+    CellMesher(const CellMesher &) = delete;
+    CellMesher &operator=(const CellMesher &) = delete;
+
+    const Attempt &Best() const { return best_; }
+
+    /// The first pass, then repair passes while defects remain (see RespondToDefects), until
+    /// repairRounds or the repair diverges (see kRepairPatience).
+    void Repair()
+    {
+        MeshingPass &pass = best_.pass;
+        PassDefects &passDefects = best_.defects;
+        if (cb_) cb_(20, "VSA meshing: anchors and triangulation");
+        pass = RunMeshingPass<CoordType>(s_, proxies_, param_, subdivision_, requiredAnchors_, pinnedAnchors_,
+                                         inputCells_, flooding_);
+        ++passes_;
+        if (param_.repairRounds > 0) defects_ = FindDefects(pass);
+        passDefects = defects_;
+        for (; round_ <= param_.repairRounds && defects_.Count() > 0; ++round_) {
+            if (round_ - 1 - best_.repairRound >= kRepairPatience &&
+                defects_.Count() >= kRepairDivergence * passDefects.Count())
                 break;
-            MeshingPass next = RunMeshingPass<CoordType>(
-                s, proxies, param, subdivision, requiredAnchors, pinnedAnchors, inputCells, flooding, &latest);
-            ++passes;
-            if (double(next.triangles.size()) > faceBudget) break;  // and it only grows
-            defects = FindDefects(next, &latest, &defects);
-            latest = std::move(next);
-            if (defects.intersections.size() < fewestIntersections) {
-                fewestIntersections = defects.intersections.size();
-                passDefects = defects;
-                pass = latest;
-                best.repairRound = round;
+            if (cb_) cb_(Progress(), "VSA meshing: repairing folds and self-intersections");
+            const MeshingPass &previous = round_ == 1 ? pass : latest_;
+            if (RespondToDefects(s_, previous, defects_, requiredAnchors_, pinnedAnchors_) == 0) break;
+            MeshingPass next = RunMeshingPass<CoordType>(s_, proxies_, param_, subdivision_, requiredAnchors_,
+                                                         pinnedAnchors_, inputCells_, flooding_, &previous);
+            ++passes_;
+            defects_ = FindDefects(next, &previous, &defects_);
+            latest_ = std::move(next);
+            if (defects_.BetterThan(passDefects)) {
+                passDefects = defects_;
+                pass = latest_;
+                best_.repairRound = round_;
             }
         }
     }
-    return best;
-}
+
+    /// From the best pass: cells of intersecting faces keep their input faces, until none is
+    /// left; except cells where the input itself intersects, which that cannot help. It costs
+    /// faces: taken only when it leaves fewer intersecting pairs within the budget
+    /// (maxInputFacesGrowth).
+    void KeepInputFaces()
+    {
+        MeshingPass &pass = best_.pass;
+        PassDefects &passDefects = best_.defects;
+        const double faceBudget = param_.maxInputFacesGrowth * double(pass.triangles.size());
+        if (passDefects.intersections.empty() || !(param_.maxInputFacesGrowth > 0) ||
+            FacesKeepingInput(s_, pass, passDefects) > faceBudget)
+            return;
+        size_t fewestIntersections = passDefects.intersections.size();
+        defects_ = passDefects;
+        latest_ = pass;
+        for (int last = round_ + param_.repairRounds; round_ < last && !defects_.intersections.empty(); ++round_) {
+            if (cb_) cb_(Progress(), "VSA meshing: keeping input faces against self-intersections");
+            const std::vector<char> flagged = CellsOfIntersectingFaces(s_, latest_, defects_);
+            if (KeepInputFacesOfCells(s_, flagged, inputIntersections_.CellsAmong(s_, flagged), requiredAnchors_,
+                                      pinnedAnchors_, inputCells_) == 0)
+                break;
+            MeshingPass next = RunMeshingPass<CoordType>(s_, proxies_, param_, subdivision_, requiredAnchors_,
+                                                         pinnedAnchors_, inputCells_, flooding_, &latest_);
+            ++passes_;
+            if (double(next.triangles.size()) > faceBudget) break;  // and it only grows
+            defects_ = FindDefects(next, &latest_, &defects_);
+            latest_ = std::move(next);
+            if (defects_.intersections.size() < fewestIntersections) {
+                fewestIntersections = defects_.intersections.size();
+                passDefects = defects_;
+                pass = latest_;
+                best_.repairRound = round_;
+            }
+        }
+    }
+
+private:
+    const MeshingSurface &s_;
+    const std::vector<Proxy> proxies_;
+    const MeshingParam &param_;
+    InputIntersections &inputIntersections_;
+    int &passes_;
+    vcg::CallBackPos *cb_;
+    ChordGapTest gapTest_;
+    ChainSubdivision subdivision_;
+    std::vector<char> requiredAnchors_, pinnedAnchors_, inputCells_;
+    CellFlooding flooding_;
+    Attempt best_;
+    MeshingPass latest_;   ///< the last pass run
+    PassDefects defects_;  ///< those of latest_ (of the first pass, before any repair)
+    int round_ = 1;        ///< the next round
+
+    int Progress() const { return 20 + 50 * round_ / (2 * param_.repairRounds + 1); }
+};
 
 }  // namespace detail
 
@@ -755,46 +790,58 @@ MeshingReport BuildApproximatingMesh(const IndexedMesh &in, const Partition &par
                     "maxInputFacesGrowth and halvingRounds must be non-negative");
 
     if (cb) cb(0, "VSA meshing: cutting regions into discs");
-    MeshingSurface s;
-    if (!BuildMeshingSurface(in, partition.faceRegion, regionCount, s, report.error)) return report;
-    report.ignoredFaces = s.ignoredFaces;
-    report.splitVertices = s.splitVertices;
+    auto surface = std::make_shared<MeshingSurface>();
+    if (!BuildMeshingSurface(in, partition.faceRegion, regionCount, *surface, report.error)) return report;
+    report.ignoredFaces = surface->ignoredFaces;
+    report.splitVertices = surface->splitVertices;
     std::vector<int> regionCells(regionCount, 0);  // before any halving (see regionsCut)
-    for (int r : s.cellRegion) ++regionCells[r];
+    for (int r : surface->cellRegion) ++regionCells[r];
     detail::InputIntersections inputIntersections(in);
-    detail::MeshingAttempt best = detail::MeshCells<CoordType>(s, detail::UsableProxies(s, partition.proxies), param,
-                                                               inputIntersections, report.passes, cb);
-    // Cells whose flat triangulation still cuts through the output are halved, and meshed
-    // again, from the latest attempt; the output is the attempt with the fewest intersecting
-    // pairs (the earliest on ties).
-    if (param.halvingRounds > 0 && !best.defects.intersections.empty()) {
-        MeshingSurface halved = s;
-        std::vector<char> flagged = detail::CellsOfIntersectingFaces(s, best.pass, best.defects);
+    using Mesher = detail::CellMesher<CoordType>;
+    auto mesherOf = [&](const MeshingSurface &cells) {
+        return std::make_unique<Mesher>(cells, detail::UsableProxies(cells, partition.proxies), param,
+                                         inputIntersections, report.passes, cb);
+    };
+    std::shared_ptr<MeshingSurface> bestSurface = surface;
+    std::unique_ptr<Mesher> best = mesherOf(*surface);
+    best->Repair();
+    // Where the output still intersects itself, the cells of the intersecting faces are halved
+    // and meshed again, each round from the one before; the output comes from the round with the
+    // fewest intersecting pairs (the earliest on ties), and keeps input faces only if that still
+    // leaves some: halves stay polygons of the regions, input faces do not.
+    if (param.halvingRounds > 0 && !best->Best().defects.intersections.empty()) {
+        std::shared_ptr<MeshingSurface> latest = surface;
+        std::vector<char> flagged = detail::CellsOfIntersectingFaces(*latest, best->Best().pass, best->Best().defects);
         int halvedSoFar = 0;
         for (int round = 1; round <= param.halvingRounds; ++round) {
             if (cb) cb(70, "VSA meshing: halving cells against self-intersections");
-            const std::vector<char> intersectingInput = inputIntersections.CellsAmong(halved, flagged);
-            for (int c = 0; c < halved.CellCount(); ++c) flagged[c] &= !intersectingInput[c];
-            const int cellsHalved = HalveCells(halved, flagged);
+            const std::vector<char> intersectingInput = inputIntersections.CellsAmong(*latest, flagged);
+            for (int c = 0; c < latest->CellCount(); ++c) flagged[c] &= !intersectingInput[c];
+            auto halved = std::make_shared<MeshingSurface>(*latest);
+            const int cellsHalved = HalveCells(*halved, flagged);
             std::string internalError;  // cells grown as discs always trace: keep the best output, if not
-            if (cellsHalved == 0 || !detail::BuildCellsAndLoops(halved, internalError)) break;
+            if (cellsHalved == 0 || !detail::BuildCellsAndLoops(*halved, internalError)) break;
             halvedSoFar += cellsHalved;
-            detail::MeshingAttempt attempt =
-                detail::MeshCells<CoordType>(halved, detail::UsableProxies(halved, partition.proxies), param,
-                                             inputIntersections, report.passes, cb);
-            flagged = detail::CellsOfIntersectingFaces(halved, attempt.pass, attempt.defects);
-            if (attempt.defects.intersections.size() < best.defects.intersections.size()) {
+            std::unique_ptr<Mesher> attempt = mesherOf(*halved);
+            attempt->Repair();
+            const detail::PassDefects &defects = attempt->Best().defects;
+            flagged = detail::CellsOfIntersectingFaces(*halved, attempt->Best().pass, defects);
+            latest = halved;
+            if (defects.intersections.size() < best->Best().defects.intersections.size()) {
                 best = std::move(attempt);
-                s = halved;
+                bestSurface = halved;
                 report.halvingRounds = round;
                 report.cellsHalved = halvedSoFar;
             }
-            if (best.defects.intersections.empty() || round - report.halvingRounds >= detail::kHalvingPatience) break;
+            if (best->Best().defects.intersections.empty() || round - report.halvingRounds >= detail::kHalvingPatience)
+                break;
         }
     }
-    const detail::MeshingPass &pass = best.pass;
-    const detail::PassDefects &passDefects = best.defects;
-    report.repairRounds = best.repairRound;
+    best->KeepInputFaces();
+    const MeshingSurface &s = *bestSurface;
+    const detail::MeshingPass &pass = best->Best().pass;
+    const detail::PassDefects &passDefects = best->Best().defects;
+    report.repairRounds = best->Best().repairRound;
     report.repairAnchors = pass.anchors.required;
     report.pinnedAnchors = param.projectAnchors ? pass.pinnedAnchors : 0;
     const AnchorSet &anchors = pass.anchors;
