@@ -274,6 +274,31 @@ TEST(MeshingRealMeshes, HalvingCellsRemovesIntersectionsThatAnchorsCannot)
     }
 }
 
+TEST(MeshingRealMeshes, ProgressOnlyMovesForwardThroughHalving)
+{
+    // MeshLab shows the callback's position as a progress bar: through repair passes and
+    // halving rounds (turbine at k=20 takes several) it must never move back, and end at 100.
+    IndexedMesh im;
+    ApproximationResult partition;
+    const std::string error = PartitionSample("turbine.off", 20, SeedingMethod::Hierarchical, im, partition);
+    if (!error.empty()) GTEST_SKIP() << error;
+    ASSERT_TRUE(partition.ok) << partition.error;
+    static std::vector<int> positions;
+    positions.clear();
+    vcg::CallBackPos *record = [](const int pos, const char *) {
+        positions.push_back(pos);
+        return true;
+    };
+    TMesh out;
+    const MeshingReport r = BuildApproximatingMesh(im, partition.partition, MeshingParam(), out, record);
+    ASSERT_TRUE(r.ok) << r.error;
+    ASSERT_GT(r.halvingRounds, 0);
+    ASSERT_FALSE(positions.empty());
+    EXPECT_GE(positions.front(), 0);
+    EXPECT_EQ(positions.back(), 100);
+    for (size_t i = 1; i < positions.size(); ++i) EXPECT_LE(positions[i - 1], positions[i]) << "call " << i;
+}
+
 TEST(MeshingRealMeshes, TheOutputPassIsTheOneWithFewestIntersections)
 {
     // Boeing at k=50: an early pass has the fewest defects in all (hundreds of intersecting

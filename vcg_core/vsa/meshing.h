@@ -799,12 +799,12 @@ MeshingReport BuildApproximatingMesh(const IndexedMesh &in, const Partition &par
     for (int r : surface->cellRegion) ++regionCells[r];
     detail::InputIntersections inputIntersections(in);
     using Mesher = detail::CellMesher<CoordType>;
-    auto mesherOf = [&](const MeshingSurface &cells) {
+    auto mesherOf = [&](const MeshingSurface &cells, vcg::CallBackPos *progress) {
         return std::make_unique<Mesher>(cells, detail::UsableProxies(cells, partition.proxies), param,
-                                         inputIntersections, report.passes, cb);
+                                         inputIntersections, report.passes, progress);
     };
     std::shared_ptr<MeshingSurface> bestSurface = surface;
-    std::unique_ptr<Mesher> best = mesherOf(*surface);
+    std::unique_ptr<Mesher> best = mesherOf(*surface, cb);
     best->Repair();
     // Where the output still intersects itself, the cells of the intersecting faces are halved
     // and meshed again, each round from the one before; the output comes from the round with the
@@ -815,7 +815,7 @@ MeshingReport BuildApproximatingMesh(const IndexedMesh &in, const Partition &par
         std::vector<char> flagged = detail::CellsOfIntersectingFaces(*latest, best->Best().pass, best->Best().defects);
         int halvedSoFar = 0;
         for (int round = 1; round <= param.halvingRounds; ++round) {
-            if (cb) cb(70, "VSA meshing: halving cells against self-intersections");
+            if (cb) cb(70 + 10 * round / (param.halvingRounds + 1), "VSA meshing: halving cells");
             const std::vector<char> intersectingInput = inputIntersections.CellsAmong(*latest, flagged);
             for (int c = 0; c < latest->CellCount(); ++c) flagged[c] &= !intersectingInput[c];
             auto halved = std::make_shared<MeshingSurface>(*latest);
@@ -823,7 +823,7 @@ MeshingReport BuildApproximatingMesh(const IndexedMesh &in, const Partition &par
             std::string internalError;  // cells grown as discs always trace: keep the best output, if not
             if (cellsHalved == 0 || !detail::BuildCellsAndLoops(*halved, internalError)) break;
             halvedSoFar += cellsHalved;
-            std::unique_ptr<Mesher> attempt = mesherOf(*halved);
+            std::unique_ptr<Mesher> attempt = mesherOf(*halved, nullptr);  // progress: one step per round
             attempt->Repair();
             const detail::PassDefects &defects = attempt->Best().defects;
             flagged = detail::CellsOfIntersectingFaces(*halved, attempt->Best().pass, defects);
