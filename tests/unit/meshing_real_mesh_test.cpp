@@ -29,9 +29,10 @@ struct SweepCase
 
 /// Partitions and meshes one case; checks what must hold whatever the geometry: the output
 /// is a manifold, oriented, closed where the input is, with the input's components and Euler
-/// characteristic, no degenerate or duplicate face, and no region lost.
+/// characteristic, no degenerate or duplicate face, and no region lost. `progress` goes to the
+/// meshing.
 void CheckCase(const SweepCase &c, bool print, const MeshingParam &param = MeshingParam(),
-               MeshingReport *report = nullptr)
+               MeshingReport *report = nullptr, vcg::CallBackPos *progress = nullptr)
 {
     TMesh m;
     std::string error;
@@ -46,7 +47,7 @@ void CheckCase(const SweepCase &c, bool print, const MeshingParam &param = Meshi
     ASSERT_TRUE(partition.ok) << partition.error;
     TMesh out;
     const auto start = std::chrono::steady_clock::now();
-    const MeshingReport r = BuildApproximatingMesh(im, partition.partition, param, out);
+    const MeshingReport r = BuildApproximatingMesh(im, partition.partition, param, out, progress);
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     ASSERT_TRUE(r.ok) << r.error;
     const MeshValidity &v = r.validity;
@@ -254,14 +255,22 @@ TEST(MeshingRealMeshes, HalvingCellsRemovesIntersectionsThatAnchorsCannot)
     // through distant parts of the output; anchor repairs leave hundreds of intersecting pairs
     // and keeping input faces would need far more than the face budget. Halving the cells of
     // the intersecting faces, round after round, leaves none: each region stays in the output,
-    // as two or more polygons, and the topology is the input's.
+    // as two or more polygons, and the topology is the input's. MeshLab shows the callback's
+    // position as a progress bar: through repair passes and halving rounds it must never move
+    // back, and it ends at 100.
+    static std::vector<int> positions;
+    vcg::CallBackPos *record = [](const int pos, const char *) {
+        positions.push_back(pos);
+        return true;
+    };
     for (SeedingMethod init : {SeedingMethod::Random, SeedingMethod::Farthest, SeedingMethod::Hierarchical}) {
         const SweepCase c{"turbine.off", 20, init};
         MeshingParam never;
         never.halvingRounds = 0;
         MeshingReport without, with;
         CheckCase(c, false, never, &without);
-        CheckCase(c, false, MeshingParam(), &with);
+        positions.clear();
+        CheckCase(c, false, MeshingParam(), &with, record);
         const std::string what = "init " + std::to_string(int(init));
         EXPECT_GT(without.validity.selfIntersections, 100) << what;
         EXPECT_EQ(without.halvingRounds, 0) << what;
@@ -271,32 +280,12 @@ TEST(MeshingRealMeshes, HalvingCellsRemovesIntersectionsThatAnchorsCannot)
         EXPECT_GE(with.cellsHalved, with.halvingRounds) << what;
         EXPECT_EQ(with.cells, without.cells + with.cellsHalved) << what;
         EXPECT_EQ(with.regionsCut, without.regionsCut) << what;  // halves are not regions cut into discs
+        ASSERT_FALSE(positions.empty()) << what;
+        EXPECT_GE(positions.front(), 0) << what;
+        EXPECT_EQ(positions.back(), 100) << what;
+        for (size_t i = 1; i < positions.size(); ++i)
+            EXPECT_LE(positions[i - 1], positions[i]) << what << ", call " << i;
     }
-}
-
-TEST(MeshingRealMeshes, ProgressOnlyMovesForwardThroughHalving)
-{
-    // MeshLab shows the callback's position as a progress bar: through repair passes and
-    // halving rounds (turbine at k=20 takes several) it must never move back, and end at 100.
-    IndexedMesh im;
-    ApproximationResult partition;
-    const std::string error = PartitionSample("turbine.off", 20, SeedingMethod::Hierarchical, im, partition);
-    if (!error.empty()) GTEST_SKIP() << error;
-    ASSERT_TRUE(partition.ok) << partition.error;
-    static std::vector<int> positions;
-    positions.clear();
-    vcg::CallBackPos *record = [](const int pos, const char *) {
-        positions.push_back(pos);
-        return true;
-    };
-    TMesh out;
-    const MeshingReport r = BuildApproximatingMesh(im, partition.partition, MeshingParam(), out, record);
-    ASSERT_TRUE(r.ok) << r.error;
-    ASSERT_GT(r.halvingRounds, 0);
-    ASSERT_FALSE(positions.empty());
-    EXPECT_GE(positions.front(), 0);
-    EXPECT_EQ(positions.back(), 100);
-    for (size_t i = 1; i < positions.size(); ++i) EXPECT_LE(positions[i - 1], positions[i]) << "call " << i;
 }
 
 TEST(MeshingRealMeshes, TheOutputPassIsTheOneWithFewestIntersections)
