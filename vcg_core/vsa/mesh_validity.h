@@ -298,6 +298,33 @@ inline std::vector<char> DegenerateFaceMask(const IndexedMesh &im)
     return degenerate;
 }
 
+/// ShapeOfFace of every face of `im` not flagged in `degenerate`.
+inline std::vector<FaceShape> ShapesOfFaces(const IndexedMesh &im, const std::vector<char> &degenerate)
+{
+    std::vector<FaceShape> shape(im.faces.size());
+    for (int f = 0; f < im.FaceCount(); ++f)
+        if (!degenerate[f]) shape[f] = ShapeOfFace(im, f);
+    return shape;
+}
+
+/// Calls met(g) for each face g in `grid` (built on `im`) that face f intersects (see
+/// FacesIntersect), except f itself and the faces `skip(g)` leaves out. `metFrom` (one entry
+/// per face, never f before) records each g met from f, so that it is tested once.
+template <class Skip, class Met>
+void ForEachIntersectingFace(const IndexedMesh &im, const std::vector<FaceShape> &shape, const SurfaceGrid &grid,
+                             int f, std::vector<int> &metFrom, Skip skip, Met met)
+{
+    grid.ForEachCellOfFace(f, [&](size_t cell) {
+        const auto [first, last] = grid.FacesIn(cell);
+        for (const int *other = first; other != last; ++other) {
+            const int g = *other;
+            if (g == f || skip(g) || metFrom[g] == f) continue;
+            metFrom[g] = f;
+            if (BoxesTouch(grid.FaceBox(f), grid.FaceBox(g)) && FacesIntersect(im, shape, f, g)) met(g);
+        }
+    });
+}
+
 /// Pairs (f < g) of faces not flagged in `degenerate` (DegenerateFaceMask) that intersect
 /// beyond their shared corners, sorted; only pairs with a face flagged in `fresh` when it is
 /// not empty (the pairs of the other faces are known). Needs only `faces` and `positions`.
@@ -312,24 +339,15 @@ inline std::vector<std::pair<int, int>> SelfIntersectingPairs(const IndexedMesh 
     std::vector<char> outOfGrid(faceCount);
     for (int f = 0; f < faceCount; ++f) outOfGrid[f] = degenerate[f] || !isFresh(f);
     const SurfaceGrid grid(im.positions, im.faces, outOfGrid);
-    std::vector<FaceShape> shape(faceCount);
-    for (int f = 0; f < faceCount; ++f)
-        if (!degenerate[f]) shape[f] = ShapeOfFace(im, f);
-    std::vector<int> metFrom(faceCount, -1);  // the last face that met this fresh one
+    const std::vector<FaceShape> shape = ShapesOfFaces(im, degenerate);
+    std::vector<int> metFrom(faceCount, -1);
     std::vector<std::pair<int, int>> pairs;
     for (int f = 0; f < faceCount; ++f) {
         if (degenerate[f]) continue;
         const bool freshF = isFresh(f);
-        grid.ForEachCellOfFace(f, [&](size_t cell) {
-            const auto [first, last] = grid.FacesIn(cell);
-            for (const int *other = first; other != last; ++other) {
-                const int g = *other;
-                if (g == f || (freshF && g < f) || metFrom[g] == f) continue;
-                metFrom[g] = f;
-                if (!BoxesTouch(grid.FaceBox(f), grid.FaceBox(g))) continue;
-                if (FacesIntersect(im, shape, f, g)) pairs.emplace_back(std::min(f, g), std::max(f, g));
-            }
-        });
+        ForEachIntersectingFace(
+            im, shape, grid, f, metFrom, [&](int g) { return freshF && g < f; },
+            [&](int g) { pairs.emplace_back(std::min(f, g), std::max(f, g)); });
     }
     std::sort(pairs.begin(), pairs.end());
     return pairs;

@@ -601,7 +601,8 @@ inline bool WritesPass(const IndexedMesh &written, const MeshingPass &pass)
 /// Where the input itself intersects, looked for only in the cells that need to know (those
 /// of intersecting output faces, which neither keeping input faces nor halving can mend
 /// there): testing the whole input costs more than a pass. Input faces tested stay known
-/// from one surface to the next.
+/// from one surface to the next; the input's faces go in one grid, built at the first test,
+/// and each test visits the grid cells of the faces it tests only.
 class InputIntersections
 {
 public:
@@ -615,13 +616,26 @@ public:
     std::vector<char> CellsAmong(const MeshingSurface &s, const std::vector<char> &cells)
     {
         std::vector<char> fresh(in_.FaceCount(), 0);
-        bool any = false;
+        std::vector<int> freshFaces;
         for (int f = 0; f < s.FaceCount(); ++f) {
             const int source = s.sourceFace[f];
-            if (cells[s.faceCell[f]] && !tested_[source]) fresh[source] = tested_[source] = 1, any = true;
+            if (cells[s.faceCell[f]] && !tested_[source]) {
+                fresh[source] = tested_[source] = 1;
+                freshFaces.push_back(source);
+            }
         }
-        if (any)
-            for (const auto &[f, g] : SelfIntersectingPairs(in_, fresh)) intersecting_[f] = intersecting_[g] = 1;
+        if (!freshFaces.empty() && !grid_) {
+            degenerate_ = DegenerateFaceMask(in_);
+            shape_ = ShapesOfFaces(in_, degenerate_);
+            grid_ = std::make_unique<SurfaceGrid>(in_.positions, in_.faces, degenerate_);
+        }
+        std::vector<int> metFrom(freshFaces.empty() ? 0 : in_.FaceCount(), -1);
+        for (int f : freshFaces) {
+            if (degenerate_[f]) continue;
+            ForEachIntersectingFace(
+                in_, shape_, *grid_, f, metFrom, [&](int g) { return fresh[g] && g < f; },  // tested from g
+                [&](int g) { intersecting_[f] = intersecting_[g] = 1; });
+        }
         std::vector<char> found(s.CellCount(), 0);
         for (int f = 0; f < s.FaceCount(); ++f)
             if (cells[s.faceCell[f]] && intersecting_[s.sourceFace[f]]) found[s.faceCell[f]] = 1;
@@ -631,14 +645,17 @@ public:
 private:
     const IndexedMesh &in_;
     std::vector<char> tested_, intersecting_;  ///< per input face
+    std::vector<char> degenerate_;             ///< per input face, with shape_ and grid_ once needed
+    std::vector<FaceShape> shape_;
+    std::unique_ptr<SurfaceGrid> grid_;
 };
 
 /// The passes over the cells of one surface (see BuildApproximatingMesh): a first pass and
 /// repair passes (Repair), then, if need be, the last resort of keeping input faces
 /// (KeepInputFaces), each pass responding to the defects of the one before. Best() is the best
 /// pass so far (see PassDefects::BetterThan; the earliest on ties). Passes run are added to
-/// `passes`. Holds references to `s`, `param`, `inputIntersections` and `passes`; not movable, as its
-/// chord subdivision points into it.
+/// `passes`. Holds references to `s`, `param`, `gapTest`, `inputIntersections` and `passes`; not
+/// movable, as its chord subdivision points into it.
 template <class CoordType>
 class CellMesher
 {
@@ -651,12 +668,13 @@ public:
         int repairRound = 0;
     };
 
-    CellMesher(const MeshingSurface &s, std::vector<Proxy> proxies, const MeshingParam &param,
+    /// `gapTest`: on `s`'s faces, or nullptr to leave the gap test out (chordGapThreshold 0).
+    CellMesher(const MeshingSurface &s, std::vector<Proxy> proxies, const MeshingParam &param, ChordGapTest *gapTest,
                InputIntersections &inputIntersections, int &passes, vcg::CallBackPos *cb)
         : s_(s), proxies_(std::move(proxies)), param_(param), inputIntersections_(inputIntersections),
-          passes_(passes), cb_(cb), gapTest_(s.positions, s.faces, param.chordGapThreshold),
+          passes_(passes), cb_(cb),
           subdivision_(s, proxies_, param.chordThreshold, ChordDeviationBound(s, proxies_, param.chordErrorFactor),
-                       param.chordGapThreshold > 0 ? &gapTest_ : nullptr),
+                       gapTest),
           requiredAnchors_(s.VertexCount(), 0), pinnedAnchors_(s.VertexCount(), 0), inputCells_(s.CellCount(), 0),
           flooding_(s)
     {
@@ -741,7 +759,6 @@ private:
     InputIntersections &inputIntersections_;
     int &passes_;
     vcg::CallBackPos *cb_;
-    ChordGapTest gapTest_;
     ChainSubdivision subdivision_;
     std::vector<char> requiredAnchors_, pinnedAnchors_, inputCells_;
     CellFlooding flooding_;
@@ -798,10 +815,13 @@ MeshingReport BuildApproximatingMesh(const IndexedMesh &in, const Partition &par
     std::vector<int> regionCells(regionCount, 0);  // before any halving (see regionsCut)
     for (int r : surface->cellRegion) ++regionCells[r];
     detail::InputIntersections inputIntersections(in);
+    // Halving changes cells only: every surface has these faces, so the gap test's grid is built once.
+    detail::ChordGapTest gapTest(surface->positions, surface->faces, param.chordGapThreshold);
     using Mesher = detail::CellMesher<CoordType>;
     auto mesherOf = [&](const MeshingSurface &cells, vcg::CallBackPos *progress) {
         return std::make_unique<Mesher>(cells, detail::UsableProxies(cells, partition.proxies), param,
-                                         inputIntersections, report.passes, progress);
+                                         param.chordGapThreshold > 0 ? &gapTest : nullptr, inputIntersections,
+                                         report.passes, progress);
     };
     std::shared_ptr<MeshingSurface> bestSurface = surface;
     std::unique_ptr<Mesher> best = mesherOf(*surface, cb);
