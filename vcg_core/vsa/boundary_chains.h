@@ -158,6 +158,14 @@ public:
         return true;
     }
 
+    /// Makes `disc` (faces of `region` that form a disc, none in a cell yet) the next cell.
+    void Commit(const std::vector<int> &disc, int region)
+    {
+        const int cell = s_.CellCount();
+        for (int f : disc) s_.faceCell[f] = cell;
+        s_.cellRegion.push_back(region);
+    }
+
 private:
     MeshingSurface &s_;
     std::vector<unsigned char> inSlot_;  ///< per vertex: bit b set when in the disc growing in slot b
@@ -236,13 +244,6 @@ private:
         for (int f : disc) s_.faceCell[f] = kFree;
     }
 
-    void Commit(const std::vector<int> &disc, int region)
-    {
-        const int cell = s_.CellCount();
-        for (int f : disc) s_.faceCell[f] = cell;
-        s_.cellRegion.push_back(region);
-    }
-
     /// The face of `piece` farthest from `start` in edge hops (first one found on ties).
     int FarthestFace(const std::vector<int> &piece, int start)
     {
@@ -284,10 +285,15 @@ private:
 };
 
 /// Cuts every region into disc cells: components of a region's piece (faces of one region and
-/// one piece, connected through edges) in order of their lowest face.
+/// one piece, connected through edges) in order of their lowest face. When `s` has cells
+/// already (rebuilding after HalveCells), a component that is one of them, whole, is a disc
+/// and stays one cell without being grown again.
 inline void BuildCells(MeshingSurface &s)
 {
     const int faceCount = s.FaceCount();
+    std::vector<int> previousCell(faceCount, -1);
+    if (s.faceCell.size() == size_t(faceCount)) previousCell.swap(s.faceCell);
+    const std::vector<int> previousOffset = std::move(s.cellFaceOffset);
     s.faceCell.assign(faceCount, -1);
     s.cellRegion.clear();
     s.nonDiscRegions = 0;
@@ -295,15 +301,21 @@ inline void BuildCells(MeshingSurface &s)
     std::vector<char> seen(faceCount, 0);
     for (int start = 0; start < faceCount; ++start) {
         if (seen[start]) continue;
-        const int region = s.faceRegion[start], piece = s.facePiece[start];
+        const int region = s.faceRegion[start], piece = s.facePiece[start], before = previousCell[start];
         std::vector<int> component = {start};
         seen[start] = 1;
+        bool inOneCell = before >= 0;
         for (size_t head = 0; head < component.size(); ++head)
             for (int g : s.neighbors[component[head]])
                 if (g >= 0 && !seen[g] && s.faceRegion[g] == region && s.facePiece[g] == piece) {
                     seen[g] = 1;
                     component.push_back(g);
+                    inOneCell &= previousCell[g] == before;
                 }
+        if (inOneCell && int(component.size()) == previousOffset[before + 1] - previousOffset[before]) {
+            grower.Commit(component, region);
+            continue;
+        }
         std::sort(component.begin(), component.end());
         s.nonDiscRegions += grower.Decompose(component, region);
     }
