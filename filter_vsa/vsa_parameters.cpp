@@ -53,8 +53,8 @@ void DefineVsaParameters(RichParameterList &parameters, const CMeshO &mesh)
         "Place each anchor at the average of its projections on the planes of the proxies around it "
         "(as in the paper); when off, anchors keep the position of the original vertex."));
     parameters.addParam(RichBool("Polygonal", true, "Polygonal output",
-        "Mark the edges inside each region as faux, so MeshLab shows (and polygon-aware formats save) "
-        "every region as one polygon."));
+        "Mark the edges inside each region as faux, so MeshLab shows every region as one polygon. A PLY "
+        "saved with face flags keeps them (MeshLab 2020.09's polygonal OFF export writes wrong indices)."));
     parameters.addParam(RichBool("ColorizeRegions", true, "Colorize regions on the input",
         "Color the faces of the input layer by region and store the region index as per-face quality."));
     parameters.addParam(RichBool("AnchorLayer", false, "Add anchor layer",

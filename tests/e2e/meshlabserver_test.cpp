@@ -9,6 +9,7 @@
 
 #include <sys/wait.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -213,14 +214,28 @@ TEST(MeshLabServer, HausdorffScriptMeasuresBothWays)
 
 TEST(MeshLabServer, PolygonalOutputKeepsRegionsAsPolygons)
 {
-    // meshlabserver 2020.09 aborts when asked for polygonal OBJ ("poligonalize" missing), so
-    // the polygons are checked in OFF, which it writes with `-m mp`.
+    // meshlabserver 2020.09 cannot save the polygons itself (its polygonal OFF writes vertex
+    // flags for indices, and it aborts on polygonal OBJ): the PLY keeps the faux-edge flags, and
+    // polygons_from_ply.py turns them into polygons. Checked: the polygons make a closed,
+    // consistently oriented polygon mesh of fandisk's topology, about one polygon per region.
     const fs::path dir = WorkDir("polygonal");
-    const fs::path off = dir / "approximation.off";
+    const fs::path ply = dir / "approximation.ply", flagless = dir / "no_flags.ply", off = dir / "polygons.off";
     const ServerRun run = RunServer(dir, "-i " + Quote(kFandisk) + " -s " +
                                              Quote(WriteVsaScript(dir, {{"ProxyNum", "30"}}).string()) + " -o " +
-                                             Quote(off.string()) + " -m mp");
+                                             Quote(ply.string()) + " -l 1 -m ff -o " + Quote(flagless.string()) +
+                                             " -l 1");
     ASSERT_EQ(run.exitCode, 0) << run.output;
+    auto convert = [&](const fs::path &from) {
+        const std::string command = std::string(VSA_PYTHON3) + " " + Quote(VSA_POLYGONS_FROM_PLY) + " " +
+                                    Quote(from.string()) + " " + Quote(off.string()) + " > " +
+                                    Quote((dir / "convert.out").string()) + " 2>&1";
+        const int status = std::system(command.c_str());
+        return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    };
+    EXPECT_EQ(convert(flagless), 1) << "a PLY without face flags has no polygons to recover";
+    EXPECT_NE(ReadFile(dir / "convert.out").find("no face flags"), std::string::npos);
+    ASSERT_EQ(convert(ply), 0) << ReadFile(dir / "convert.out");
+
     std::ifstream in(off);
     std::string header;
     int vertices = 0, polygons = 0, edgesUnused = 0;
@@ -231,13 +246,25 @@ TEST(MeshLabServer, PolygonalOutputKeepsRegionsAsPolygons)
         in >> x >> y >> z;
     }
     int largerThanTriangles = 0;
+    std::set<std::pair<int, int>> halfEdges;
+    std::vector<char> used(vertices, 0);
     for (int p = 0; p < polygons; ++p) {
         int corners = 0;
         in >> corners;
-        for (int c = 0, index; c < corners; ++c) in >> index;
+        std::vector<int> polygon(corners);
+        for (int &index : polygon) in >> index;
+        ASSERT_TRUE(in) << "truncated OFF";
         largerThanTriangles += corners > 3;
+        for (int c = 0; c < corners; ++c) {
+            const int from = polygon[c], to = polygon[(c + 1) % corners];
+            ASSERT_TRUE(from >= 0 && from < vertices && from != to) << "polygon " << p;
+            used[from] = 1;
+            EXPECT_TRUE(halfEdges.insert({from, to}).second) << "edge " << from << "-" << to << " in two polygons";
+        }
     }
-    ASSERT_TRUE(in) << "truncated OFF";
+    for (const auto &[from, to] : halfEdges) EXPECT_TRUE(halfEdges.count({to, from})) << "open at " << from << "-" << to;
+    EXPECT_EQ(std::count(used.begin(), used.end(), 1), vertices);
+    EXPECT_EQ(vertices - int(halfEdges.size()) / 2 + polygons, 2);  // fandisk is a sphere
     // One polygon per region, except a region with a hole or a ring, cut into discs.
     EXPECT_GE(polygons, 30);
     EXPECT_LE(polygons, 2 * 30);
