@@ -128,6 +128,38 @@ def polygons_of(triangles, flags):
     return polygons
 
 
+def sub(p, q):
+    return (p[0] - q[0], p[1] - q[1], p[2] - q[2])
+
+
+def cross(u, v):
+    return (u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0])
+
+
+def dot(u, v):
+    return u[0] * v[0] + u[1] * v[1] + u[2] * v[2]
+
+
+def fan_ready(loop, positions):
+    """`loop` started at a corner whose fan triangulates it without folding (every fan triangle
+    turns like the polygon's Newell normal), and whether there is one: MeshLab's OFF and OBJ
+    importers triangulate each polygon as a fan from its first corner."""
+    points = [positions[v] for v in loop]
+    normal = [0.0, 0.0, 0.0]
+    for i, p in enumerate(points):
+        q = points[(i + 1) % len(points)]
+        normal[0] += (p[1] - q[1]) * (p[2] + q[2])
+        normal[1] += (p[2] - q[2]) * (p[0] + q[0])
+        normal[2] += (p[0] - q[0]) * (p[1] + q[1])
+    n = len(loop)
+    for apex in range(n):
+        a = points[apex]
+        if all(dot(cross(sub(points[(apex + k) % n], a), sub(points[(apex + k + 1) % n], a)), normal) > 0
+               for k in range(1, n - 1)):
+            return loop[apex:] + loop[:apex], True
+    return loop, False
+
+
 def main():
     if len(sys.argv) != 3:
         print(__doc__, file=sys.stderr)
@@ -139,6 +171,8 @@ def main():
     except (OSError, ValueError, KeyError, StopIteration, struct.error) as error:
         print(f"polygons_from_ply: {error}", file=sys.stderr)
         return 1
+    ready = [fan_ready(polygon, positions) for polygon in polygons]
+    polygons = [polygon for polygon, _ in ready]
     used = sorted({v for polygon in polygons for v in polygon})
     index = {v: i for i, v in enumerate(used)}
     with open(target, "w") as out:
@@ -150,6 +184,10 @@ def main():
     quads = sum(len(p) == 4 for p in polygons)
     print(f"{target}: {len(polygons)} polygons ({quads} quadrilaterals, the largest with "
           f"{max(len(p) for p in polygons)} sides) on {len(used)} vertices, from {len(triangles)} triangles")
+    folding = sum(not fine for _, fine in ready)
+    if folding:
+        print(f"  {folding} polygons are not fans of any corner: MeshLab's importers, which triangulate each "
+              "polygon as a fan, fold them")
     return 0
 
 
