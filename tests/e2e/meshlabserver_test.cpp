@@ -234,7 +234,14 @@ TEST(MeshLabServer, PolygonalOutputKeepsRegionsAsPolygons)
     };
     EXPECT_EQ(convert(flagless), 1) << "a PLY without face flags has no polygons to recover";
     EXPECT_NE(ReadFile(dir / "convert.out").find("no face flags"), std::string::npos);
+    // MeshLab reads the flags back: the PLY reopened and saved again keeps the same polygons.
+    const fs::path reopened = dir / "reopened.ply";
+    const ServerRun again = RunServer(dir, "-i " + Quote(ply.string()) + " -o " + Quote(reopened.string()) + " -m ff");
+    ASSERT_EQ(again.exitCode, 0) << again.output;
+    ASSERT_EQ(convert(reopened), 0) << ReadFile(dir / "convert.out");
+    const std::string reopenedPolygons = ReadFile(off);
     ASSERT_EQ(convert(ply), 0) << ReadFile(dir / "convert.out");
+    EXPECT_EQ(ReadFile(off), reopenedPolygons);
 
     std::ifstream in(off);
     std::string header;
