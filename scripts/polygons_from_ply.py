@@ -7,8 +7,9 @@ edge i joining corners i and i+1). MeshLab 2020.09 cannot save those polygons it
 export with `-m mp` writes each vertex's flags where the vertex index belongs (vcglib
 wrap/io_trimesh/export_off.h, fixed in later releases), and meshlabserver cannot ask for
 polygonal OBJ. This script joins the triangles across faux edges, walks each polygon's outline
-and writes the polygons, on the vertices they use, as OFF. It stops with an error if a polygon
-is not a disc with one outline, or if the PLY has no face flags.
+and writes the polygons, on the vertices they use, as OFF, each from a corner whose fan covers
+it where there is one (MeshLab reads a polygon as the fan of its first corner). It stops with an
+error if a polygon is not a disc with one outline, or if the PLY has no face flags.
 
     python3 scripts/polygons_from_ply.py APPROXIMATION.ply POLYGONS.off
 """
@@ -25,7 +26,8 @@ SCALARS = {  # PLY type -> struct code
 
 def read_ply(path):
     """Vertex positions, triangles and per-face flags of a PLY file (ascii or binary)."""
-    data = open(path, "rb").read()
+    with open(path, "rb") as f:
+        data = f.read()
     end = data.find(b"end_header")
     if not data.startswith(b"ply") or end < 0:
         raise ValueError(f"{path} is not a PLY file")
