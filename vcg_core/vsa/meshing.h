@@ -654,8 +654,8 @@ private:
 /// repair passes (Repair), then, if need be, the last resort of keeping input faces
 /// (KeepInputFaces), each pass responding to the defects of the one before. Best() is the best
 /// pass so far (see PassDefects::BetterThan; the earliest on ties). Passes run are added to
-/// `passes`. Holds references to `s`, `param`, `gapTest`, `inputIntersections` and `passes`; not
-/// movable, as its chord subdivision points into it.
+/// `passes`. Holds references to `s`, `proxies`, `param`, `gapTest`, `inputIntersections` and
+/// `passes`; not movable, as its chord subdivision points into it.
 template <class CoordType>
 class CellMesher
 {
@@ -668,13 +668,14 @@ public:
         int repairRound = 0;
     };
 
-    /// `gapTest`: on `s`'s faces, or nullptr to leave the gap test out (chordGapThreshold 0).
-    CellMesher(const MeshingSurface &s, std::vector<Proxy> proxies, const MeshingParam &param, ChordGapTest *gapTest,
-               InputIntersections &inputIntersections, int &passes, vcg::CallBackPos *cb)
-        : s_(s), proxies_(std::move(proxies)), param_(param), inputIntersections_(inputIntersections),
-          passes_(passes), cb_(cb),
-          subdivision_(s, proxies_, param.chordThreshold, ChordDeviationBound(s, proxies_, param.chordErrorFactor),
-                       gapTest),
+    /// `proxies`: UsableProxies; `chordDeviationBound`: ChordDeviationBound; `gapTest`: on
+    /// `s`'s faces, or nullptr to leave the gap test out (chordGapThreshold 0). All three depend
+    /// on the regions only, not on how they are cut into cells.
+    CellMesher(const MeshingSurface &s, const std::vector<Proxy> &proxies, double chordDeviationBound,
+               const MeshingParam &param, ChordGapTest *gapTest, InputIntersections &inputIntersections, int &passes,
+               vcg::CallBackPos *cb)
+        : s_(s), proxies_(proxies), param_(param), inputIntersections_(inputIntersections), passes_(passes), cb_(cb),
+          subdivision_(s, proxies_, param.chordThreshold, chordDeviationBound, gapTest),
           requiredAnchors_(s.VertexCount(), 0), pinnedAnchors_(s.VertexCount(), 0), inputCells_(s.CellCount(), 0),
           flooding_(s)
     {
@@ -754,7 +755,7 @@ public:
 
 private:
     const MeshingSurface &s_;
-    const std::vector<Proxy> proxies_;
+    const std::vector<Proxy> &proxies_;
     const MeshingParam &param_;
     InputIntersections &inputIntersections_;
     int &passes_;
@@ -815,11 +816,14 @@ MeshingReport BuildApproximatingMesh(const IndexedMesh &in, const Partition &par
     std::vector<int> regionCells(regionCount, 0);  // before any halving (see regionsCut)
     for (int r : surface->cellRegion) ++regionCells[r];
     detail::InputIntersections inputIntersections(in);
-    // Halving changes cells only: every surface has these faces, so the gap test's grid is built once.
+    // Halving changes cells only, not faces or regions: the planes, the chord deviation bound and
+    // the gap test's grid serve every surface.
+    const std::vector<Proxy> proxies = detail::UsableProxies(*surface, partition.proxies);
+    const double chordDeviationBound = detail::ChordDeviationBound(*surface, proxies, param.chordErrorFactor);
     detail::ChordGapTest gapTest(surface->positions, surface->faces, param.chordGapThreshold);
     using Mesher = detail::CellMesher<CoordType>;
     auto mesherOf = [&](const MeshingSurface &cells, vcg::CallBackPos *progress) {
-        return std::make_unique<Mesher>(cells, detail::UsableProxies(cells, partition.proxies), param,
+        return std::make_unique<Mesher>(cells, proxies, chordDeviationBound, param,
                                          param.chordGapThreshold > 0 ? &gapTest : nullptr, inputIntersections,
                                          report.passes, progress);
     };
