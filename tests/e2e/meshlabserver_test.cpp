@@ -52,15 +52,20 @@ fs::path WorkDir(const std::string &name)
     return dir;
 }
 
+/// Runs `command` in the shell, everything it prints going to `output`; returns its exit
+/// status, or -1 if it did not exit normally.
+int RunCommand(const std::string &command, const fs::path &output)
+{
+    const int status = std::system((command + " > " + Quote(output.string()) + " 2>&1").c_str());
+    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
 /// Runs meshlabserver under its own Xvfb with `arguments` (already quoted where needed).
 ServerRun RunServer(const fs::path &dir, const std::string &arguments)
 {
     const fs::path output = dir / "meshlabserver.out";
-    const std::string command = std::string(VSA_XVFB_RUN) + " -a " + Quote(VSA_MESHLABSERVER) + " " + arguments +
-                                " > " + Quote(output.string()) + " 2>&1";
-    const int status = std::system(command.c_str());
     ServerRun run;
-    run.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    run.exitCode = RunCommand(std::string(VSA_XVFB_RUN) + " -a " + Quote(VSA_MESHLABSERVER) + " " + arguments, output);
     run.output = ReadFile(output);
     return run;
 }
@@ -226,11 +231,9 @@ TEST(MeshLabServer, PolygonalOutputKeepsRegionsAsPolygons)
                                              " -l 1");
     ASSERT_EQ(run.exitCode, 0) << run.output;
     auto convert = [&](const fs::path &from) {
-        const std::string command = std::string(VSA_PYTHON3) + " " + Quote(VSA_POLYGONS_FROM_PLY) + " " +
-                                    Quote(from.string()) + " " + Quote(off.string()) + " > " +
-                                    Quote((dir / "convert.out").string()) + " 2>&1";
-        const int status = std::system(command.c_str());
-        return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+        return RunCommand(std::string(VSA_PYTHON3) + " " + Quote(VSA_POLYGONS_FROM_PLY) + " " + Quote(from.string()) +
+                              " " + Quote(off.string()),
+                          dir / "convert.out");
     };
     EXPECT_EQ(convert(flagless), 1) << "a PLY without face flags has no polygons to recover";
     EXPECT_NE(ReadFile(dir / "convert.out").find("no face flags"), std::string::npos);
@@ -269,7 +272,8 @@ TEST(MeshLabServer, PolygonalOutputKeepsRegionsAsPolygons)
             EXPECT_TRUE(halfEdges.insert({from, to}).second) << "edge " << from << "-" << to << " in two polygons";
         }
     }
-    for (const auto &[from, to] : halfEdges) EXPECT_TRUE(halfEdges.count({to, from})) << "open at " << from << "-" << to;
+    for (const auto &[from, to] : halfEdges)
+        EXPECT_TRUE(halfEdges.count({to, from})) << "open at " << from << "-" << to;
     EXPECT_EQ(std::count(used.begin(), used.end(), 1), vertices);
     EXPECT_EQ(vertices - int(halfEdges.size()) / 2 + polygons, 2);  // fandisk is a sphere
     // One polygon per region, except a region with a hole or a ring, cut into discs.
