@@ -801,7 +801,8 @@ MeshingReport BuildApproximatingMesh(const IndexedMesh &in, const Partition &par
     const int regionCount = int(partition.proxies.size());
     for (int r : partition.faceRegion)
         if (r < 0 || r >= regionCount)
-            return fail("a face has region " + std::to_string(r) + ", outside [0, " + std::to_string(regionCount) + ")");
+            return fail("a face has region " + std::to_string(r) + ", outside [0, " + std::to_string(regionCount) +
+                        ")");
     if (!(param.chordThreshold >= 0) || !(param.chordGapThreshold >= 0) || !(param.chordErrorFactor >= 0) ||
         !(param.maxAnchorMove >= 0) || param.repairRounds < 0 || !(param.maxInputFacesGrowth >= 0) ||
         param.halvingRounds < 0)
@@ -924,7 +925,8 @@ MeshingReport BuildApproximatingMesh(const IndexedMesh &in, const Partition &par
     const IndexedMesh written = BuildIndexedMesh(out, &diagnostics);
     const bool counted = param.repairRounds > 0 && detail::WritesPass(written, pass);
     report.validity = CheckMeshValidity(written, diagnostics, param.checkSelfIntersections && !counted);
-    if (param.checkSelfIntersections && counted) report.validity.selfIntersections = int(passDefects.intersections.size());
+    if (param.checkSelfIntersections && counted)
+        report.validity.selfIntersections = int(passDefects.intersections.size());
     report.ok = true;
     if (cb) cb(100, "VSA meshing: done");
     return report;
