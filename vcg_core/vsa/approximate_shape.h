@@ -88,7 +88,8 @@ ShapeApproximationResult ApproximateShape(const InMeshType &in, OutMeshType &out
         if (result.input.nonFiniteVertices > 0) {
             result.error = "The mesh has " + std::to_string(result.input.nonFiniteVertices) +
                            " vertices with NaN or infinite coordinates; remove them first "
-                           "(MeshLab: Cleaning and Repairing > Remove Unreferenced/Duplicate Vertices after fixing them).";
+                           "(MeshLab: Cleaning and Repairing > Remove Unreferenced/Duplicate Vertices after "
+                           "fixing them).";
             return result;
         }
 

@@ -331,14 +331,16 @@ private:
     static void CheckParam(const Param &p)
     {
         if (!(p.targetError >= 0) || !std::isfinite(p.targetError))
-            throw std::invalid_argument("The target error must be a finite number >= 0 (0 = use the number of proxies).");
+            throw std::invalid_argument(
+                "The target error must be a finite number >= 0 (0 = use the number of proxies).");
         if (p.maxIterations < 0) throw std::invalid_argument("The number of iterations cannot be negative.");
         if (!(p.tolerance >= 0) || !std::isfinite(p.tolerance))
             throw std::invalid_argument("The convergence tolerance must be a finite number >= 0.");
         if (p.relaxations < 0) throw std::invalid_argument("The number of relaxations cannot be negative.");
         if (p.metric != MetricKind::L21 && p.metric != MetricKind::L2)
             throw std::invalid_argument("Unknown metric.");
-        if (p.init != SeedingMethod::Random && p.init != SeedingMethod::Farthest && p.init != SeedingMethod::Hierarchical)
+        if (p.init != SeedingMethod::Random && p.init != SeedingMethod::Farthest &&
+            p.init != SeedingMethod::Hierarchical)
             throw std::invalid_argument("Unknown initialization method.");
     }
 
@@ -348,7 +350,8 @@ private:
         const auto finite = [](const Point3d &p) {
             return std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]);
         };
-        const auto bad = std::count_if(m.positions.begin(), m.positions.end(), [&](const Point3d &p) { return !finite(p); });
+        const auto bad =
+            std::count_if(m.positions.begin(), m.positions.end(), [&](const Point3d &p) { return !finite(p); });
         if (bad > 0)
             throw std::invalid_argument(std::to_string(bad) +
                                         " vertices have NaN or infinite coordinates: remove them first.");

@@ -255,7 +255,8 @@ inline bool FacesIntersect(const IndexedMesh &im, const std::vector<FaceShape> &
         // Faces sharing an edge meet beyond it only when folded flat onto each other: the
         // directions from the edge to the two opposite vertices (nearly) coincide.
         const Point3d hinge0 = P[tf[sharedF[0]]], hinge = (P[tf[sharedF[1]]] - hinge0).Normalize();
-        const Point3d c3 = P[tf[3 - sharedF[0] - sharedF[1]]] - hinge0, d3 = P[tg[3 - sharedG[0] - sharedG[1]]] - hinge0;
+        const Point3d c3 = P[tf[3 - sharedF[0] - sharedF[1]]] - hinge0;
+        const Point3d d3 = P[tg[3 - sharedG[0] - sharedG[1]]] - hinge0;
         const Point3d uc = c3 - hinge * (c3 * hinge), ud = d3 - hinge * (d3 * hinge);
         return uc * ud > 0 && (uc ^ ud).Norm() <= 1e-6 * uc.Norm() * ud.Norm();
     }
@@ -331,7 +332,8 @@ void ForEachIntersectingFace(const IndexedMesh &im, const std::vector<FaceShape>
 /// The fresh faces go in a SurfaceGrid, and every face meets the fresh faces of its grid
 /// cells there, each once; a pair of fresh faces is tested from its lower face only. After a
 /// repair few faces are fresh, and a grid of those alone is cheap to build.
-inline std::vector<std::pair<int, int>> SelfIntersectingPairs(const IndexedMesh &im, const std::vector<char> &degenerate,
+inline std::vector<std::pair<int, int>> SelfIntersectingPairs(const IndexedMesh &im,
+                                                              const std::vector<char> &degenerate,
                                                               const std::vector<char> &fresh)
 {
     const int faceCount = im.FaceCount();

@@ -474,7 +474,10 @@ private:
         return SineOfSmallestAngle(positions_[t[0]], positions_[t[1]], positions_[t[2]]) < 1e-6;
     }
 
-    double Turn(int a, int b, int c) const { return orientation_ * ((plane_[b] - plane_[a]) ^ (plane_[c] - plane_[a])); }
+    double Turn(int a, int b, int c) const
+    {
+        return orientation_ * ((plane_[b] - plane_[a]) ^ (plane_[c] - plane_[a]));
+    }
 
     void Evaluate(int k)
     {

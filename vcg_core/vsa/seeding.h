@@ -64,7 +64,8 @@ inline void Progress(CallBackPos *cb, int done, int total)
 }
 
 template <class Metric>
-void Relax(const IndexedMesh &mesh, const Metric &metric, RegionState &s, PartitionWorkspace<Metric> &ws, int iterations)
+void Relax(const IndexedMesh &mesh, const Metric &metric, RegionState &s, PartitionWorkspace<Metric> &ws,
+           int iterations)
 {
     for (int i = 0; i < iterations; ++i) LloydIteration(mesh, metric, s, ws);
 }
@@ -248,7 +249,8 @@ void AddRandomSeeds(const Metric &metric, const FaceGeometry &g, RegionState &s,
 /// target energy, the number of proxies doubles (with relaxations) until the target is met.
 template <class Metric>
 void SeedRandomly(const IndexedMesh &mesh, const Metric &metric, const FaceGeometry &g, RegionState &s,
-                  const SeedingGoal &goal, SeedRandom &random, PartitionWorkspace<Metric> &ws, CallBackPos *cb = nullptr)
+                  const SeedingGoal &goal, SeedRandom &random, PartitionWorkspace<Metric> &ws,
+                  CallBackPos *cb = nullptr)
 {
     detail::StartOnePerComponent(mesh, metric, g, s, random);
     if (goal.targetEnergy > 0) {
@@ -273,7 +275,8 @@ void SeedRandomly(const IndexedMesh &mesh, const Metric &metric, const FaceGeome
 /// proxies take a fraction of a second.
 template <class Metric>
 void SeedFarthest(const IndexedMesh &mesh, const Metric &metric, const FaceGeometry &g, RegionState &s,
-                  const SeedingGoal &goal, SeedRandom &random, PartitionWorkspace<Metric> &ws, CallBackPos *cb = nullptr)
+                  const SeedingGoal &goal, SeedRandom &random, PartitionWorkspace<Metric> &ws,
+                  CallBackPos *cb = nullptr)
 {
     detail::StartOnePerComponent(mesh, metric, g, s, random);
     detail::RegionFaces faces;
