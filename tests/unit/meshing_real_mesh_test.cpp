@@ -288,6 +288,30 @@ TEST(MeshingRealMeshes, HalvingCellsRemovesIntersectionsThatAnchorsCannot)
     }
 }
 
+TEST(MeshingRealMeshes, HalvingGivesUpEarlyOnlyWhereTheInputIntersectsItself)
+{
+    // Halving rounds are counted by their progress calls. Dino at k=20 is a clean input whose
+    // first halving rounds add intersecting pairs (48, then 138, 96, 54, 11, 3, 0): halving must
+    // go on until none is left. "man" intersects itself (848 pairs) near the pairs its output
+    // keeps at k=20: after detail::kHalvingPatience rounds without fewer pairs, halving stops.
+    static int halvingCalls = 0;
+    vcg::CallBackPos *count = [](const int, const char *message) {
+        halvingCalls += std::string(message) == "VSA meshing: halving cells";
+        return true;
+    };
+    MeshingReport clean, intersecting;
+    halvingCalls = 0;
+    CheckCase({"dino.off", 20, SeedingMethod::Farthest}, false, MeshingParam(), &clean, count);
+    EXPECT_EQ(clean.validity.selfIntersections, 0);
+    EXPECT_GE(clean.halvingRounds, 3);
+    EXPECT_EQ(halvingCalls, clean.halvingRounds);
+    halvingCalls = 0;
+    CheckCase({"man.off", 20, SeedingMethod::Random}, false, MeshingParam(), &intersecting, count);
+    EXPECT_GT(intersecting.validity.selfIntersections, 0);
+    EXPECT_LT(intersecting.halvingRounds + detail::kHalvingPatience, MeshingParam().halvingRounds);
+    EXPECT_EQ(halvingCalls, intersecting.halvingRounds + detail::kHalvingPatience);
+}
+
 TEST(MeshingRealMeshes, TheOutputPassIsTheOneWithFewestIntersections)
 {
     // Boeing at k=50: an early pass has the fewest defects in all (hundreds of intersecting

@@ -156,13 +156,16 @@ namespace detail {
 constexpr int kRepairPatience = 5;
 constexpr size_t kRepairDivergence = 2;
 
-/// Halving rounds give up after this many rounds in a row without fewer intersecting pairs:
-/// what remains then is mostly where the input intersects itself, or near it, and the input
-/// faces that come next handle a few pairs well. Measured on the 7 cases of the 60-case sweep
-/// and 51 runs on CGAL's sample meshes (k=50, three seedings) that kept intersections: every
-/// clean input ends without any (homer, random: 18 pairs, then 12, 2, 2, stopping there; input
-/// faces remove those 2); later rounds helped only inputs that intersect themselves, a little
-/// ("man", hierarchical: 574, then 602, 603, 603, 622, 564, 525; "polygon_mesh": 10, 10, 10, 6).
+/// Halving rounds give up after this many rounds in a row without fewer intersecting pairs, once
+/// a cell of an intersecting face has been found where the input intersects itself: what
+/// remains then is mostly there, or near it, and later rounds helped such inputs little ("man"
+/// at k=50, hierarchical: 574 pairs, then 602, 603, 603, 622, 564, 525; "polygon_mesh": 10, 10,
+/// 10, 6). On a clean input halving goes on to halvingRounds: a round can add pairs before later
+/// ones remove them all (dino at k=20, farthest: 48, then 138, 96, 54, 11, 3, 0). Giving up
+/// there too, on CGAL's sample meshes with three seedings, left pairs in 5 runs at k=20 (dino
+/// twice, lion-head, rotor_small, and bull away from its own 3 pairs) and made 3 runs at k=50
+/// keep input faces (homer, random: 18 pairs, then 12, 2, 2); now every clean input ends
+/// without any, at both k, in at most 8 rounds.
 constexpr int kHalvingPatience = 2;
 
 /// Proxies usable as planes: unit normals, finite points. A proxy given without a usable
@@ -839,10 +842,14 @@ MeshingReport BuildApproximatingMesh(const IndexedMesh &in, const Partition &par
         std::shared_ptr<MeshingSurface> latest = surface;
         std::vector<char> flagged = detail::CellsOfIntersectingFaces(*latest, best->Best().pass, best->Best().defects);
         int halvedSoFar = 0;
+        bool inputIntersectsThere = false;  // at a cell of an intersecting face, in some round
         for (int round = 1; round <= param.halvingRounds; ++round) {
             if (cb) cb(70 + 10 * round / (param.halvingRounds + 1), "VSA meshing: halving cells");
             const std::vector<char> intersectingInput = inputIntersections.CellsAmong(*latest, flagged);
-            for (int c = 0; c < latest->CellCount(); ++c) flagged[c] &= !intersectingInput[c];
+            for (int c = 0; c < latest->CellCount(); ++c) {
+                inputIntersectsThere |= flagged[c] && intersectingInput[c];
+                flagged[c] &= !intersectingInput[c];
+            }
             auto halved = std::make_shared<MeshingSurface>(*latest);
             const int cellsHalved = HalveCells(*halved, flagged);
             std::string internalError;  // cells grown as discs always trace: keep the best output, if not
@@ -859,7 +866,8 @@ MeshingReport BuildApproximatingMesh(const IndexedMesh &in, const Partition &par
                 report.halvingRounds = round;
                 report.cellsHalved = halvedSoFar;
             }
-            if (best->Best().defects.intersections.empty() || round - report.halvingRounds >= detail::kHalvingPatience)
+            if (best->Best().defects.intersections.empty() ||
+                (inputIntersectsThere && round - report.halvingRounds >= detail::kHalvingPatience))
                 break;
         }
     }
