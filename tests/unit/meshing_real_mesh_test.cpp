@@ -291,9 +291,10 @@ TEST(MeshingRealMeshes, HalvingCellsRemovesIntersectionsThatAnchorsCannot)
 TEST(MeshingRealMeshes, HalvingGivesUpEarlyOnlyWhereTheInputIntersectsItself)
 {
     // Halving rounds are counted by their progress calls. Dino at k=20 is a clean input whose
-    // first halving rounds add intersecting pairs (48, then 138, 96, 54, 11, 3, 0): halving must
-    // go on until none is left. "man" intersects itself (848 pairs) near the pairs its output
-    // keeps at k=20: after detail::kHalvingPatience rounds without fewer pairs, halving stops.
+    // first halving rounds add intersecting pairs before later ones remove them all (see
+    // kHalvingPatience; giving up early leaves 48 pairs here): halving must go on until none is
+    // left. "man" intersects itself (848 pairs) near the pairs its output keeps at k=20: after
+    // detail::kHalvingPatience rounds without fewer pairs, halving stops.
     static int halvingCalls = 0;
     vcg::CallBackPos *count = [](const int, const char *message) {
         halvingCalls += std::string(message) == "VSA meshing: halving cells";

@@ -165,7 +165,7 @@ constexpr size_t kRepairDivergence = 2;
 /// there too, on CGAL's sample meshes with three seedings, left pairs in 5 runs at k=20 (dino
 /// twice, lion-head, rotor_small, and bull away from its own 3 pairs) and made 3 runs at k=50
 /// keep input faces (homer, random: 18 pairs, then 12, 2, 2); now every clean input ends
-/// without any, at both k, in at most 8 rounds.
+/// without any, at k = 20, 50, 100 and 200, in at most 8 rounds.
 constexpr int kHalvingPatience = 2;
 
 /// Proxies usable as planes: unit normals, finite points. A proxy given without a usable
