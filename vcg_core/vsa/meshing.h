@@ -695,9 +695,7 @@ public:
         MeshingPass &pass = best_.pass;
         PassDefects &passDefects = best_.defects;
         if (cb_) cb_(20, "VSA meshing: anchors and triangulation");
-        pass = RunMeshingPass<CoordType>(s_, proxies_, param_, subdivision_, requiredAnchors_, pinnedAnchors_,
-                                         inputCells_, flooding_);
-        ++passes_;
+        pass = RunPass(nullptr);
         if (param_.repairRounds > 0) defects_ = FindDefects(pass);
         passDefects = defects_;
         for (; round_ <= param_.repairRounds && defects_.Count() > 0; ++round_) {
@@ -707,9 +705,7 @@ public:
             if (cb_) cb_(Progress(), "VSA meshing: repairing folds and self-intersections");
             const MeshingPass &previous = round_ == 1 ? pass : latest_;
             if (RespondToDefects(s_, previous, defects_, requiredAnchors_, pinnedAnchors_) == 0) break;
-            MeshingPass next = RunMeshingPass<CoordType>(s_, proxies_, param_, subdivision_, requiredAnchors_,
-                                                         pinnedAnchors_, inputCells_, flooding_, &previous);
-            ++passes_;
+            MeshingPass next = RunPass(&previous);
             defects_ = FindDefects(next, &previous, &defects_);
             latest_ = std::move(next);
             if (defects_.BetterThan(passDefects)) {
@@ -741,9 +737,7 @@ public:
             if (KeepInputFacesOfCells(s_, flagged, inputIntersections_.CellsAmong(s_, flagged), requiredAnchors_,
                                       pinnedAnchors_, inputCells_) == 0)
                 break;
-            MeshingPass next = RunMeshingPass<CoordType>(s_, proxies_, param_, subdivision_, requiredAnchors_,
-                                                         pinnedAnchors_, inputCells_, flooding_, &latest_);
-            ++passes_;
+            MeshingPass next = RunPass(&latest_);
             if (double(next.triangles.size()) > faceBudget) break;  // and it only grows
             defects_ = FindDefects(next, &latest_, &defects_);
             latest_ = std::move(next);
@@ -772,6 +766,15 @@ private:
     int round_ = 1;        ///< the next round
 
     int Progress() const { return 20 + 50 * round_ / (2 * param_.repairRounds + 1); }
+
+    /// A pass on the current required, pinned and input-face cells, derived from `previous`
+    /// (nullptr for the first), counted in `passes`.
+    MeshingPass RunPass(const MeshingPass *previous)
+    {
+        ++passes_;
+        return RunMeshingPass<CoordType>(s_, proxies_, param_, subdivision_, requiredAnchors_, pinnedAnchors_,
+                                         inputCells_, flooding_, previous);
+    }
 };
 
 }  // namespace detail
