@@ -2,9 +2,8 @@
 // distance code the benchmark drivers use (run_bench.py uses it for MeshLab's decimation).
 // SPDX-License-Identifier: GPL-3.0-or-later
 
+#include "off_file.h"
 #include "output_quality.h"
-
-#include <wrap/io_trimesh/import_off.h>
 
 #include <iostream>
 #include <string>
@@ -25,13 +24,10 @@ class PlainMesh : public vcg::tri::TriMesh<std::vector<PlainVertex>, std::vector
 /// sources (PLY would need wrap/ply/plylib.cpp).
 bool LoadOff(PlainMesh &m, const std::string &path, std::string &error)
 {
-    using Importer = vcg::tri::io::ImporterOFF<PlainMesh>;
-    const int rc = Importer::Open(m, path.c_str());
-    if (rc != Importer::NoError) {
-        error = path + ": " + Importer::ErrorMsg(rc);
-        return false;
-    }
-    return true;
+    int loadMask = 0;
+    const std::string readError = vsa_bench::ReadOff(m, path, loadMask);
+    if (!readError.empty()) error = path + ": " + readError;
+    return readError.empty();
 }
 
 }  // namespace

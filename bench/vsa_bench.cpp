@@ -7,6 +7,7 @@
 // The tolerance defaults to 0 so that --iterations Lloyd iterations run (unless the partition
 // cycles), like CGAL's run(N): per-iteration timings compare. --out writes the approximating
 // mesh with each face coloured by its region (format from the extension: ply, off, obj).
+#include "off_file.h"
 #include "output_quality.h"
 
 #include <vsa/approximation.h>
@@ -105,9 +106,16 @@ int main(int argc, char **argv)
 
     BMesh m;
     int mask = 0;
-    const int rc = vcg::tri::io::Importer<BMesh>::Open(m, o.mesh.c_str(), mask);
-    if (rc != 0 && vcg::tri::io::Importer<BMesh>::ErrorCritical(rc)) {
-        json.Add("error", std::string("cannot read mesh: ") + vcg::tri::io::Importer<BMesh>::ErrorMsg(rc)).Print();
+    std::string readError;
+    if (vsa_bench::IsOffPath(o.mesh)) {
+        readError = vsa_bench::ReadOff(m, o.mesh, mask);
+    } else {
+        const int rc = vcg::tri::io::Importer<BMesh>::Open(m, o.mesh.c_str(), mask);
+        if (rc != 0 && vcg::tri::io::Importer<BMesh>::ErrorCritical(rc))
+            readError = vcg::tri::io::Importer<BMesh>::ErrorMsg(rc);
+    }
+    if (!readError.empty()) {
+        json.Add("error", "cannot read mesh: " + readError).Print();
         return 1;
     }
     json.Add("faces", m.fn).Add("k", o.param.proxyCount).Add("metric", o.metric).Add("init", o.init);
