@@ -75,16 +75,15 @@ void CheckCase(const SweepCase &c, bool print, const MeshingParam &param = Meshi
                     seconds);
 }
 
-/// CGAL's sample mesh `name`, indexed into `im`, and our partition of it into k regions;
-/// why not, when the mesh cannot be read.
+/// CGAL's sample mesh `name`, indexed into `im`, and our partition of it into k regions (the
+/// other settings from `ap`); why not, when the mesh cannot be read.
 std::string PartitionSample(const std::string &name, int k, SeedingMethod init, IndexedMesh &im,
-                            ApproximationResult &partition)
+                            ApproximationResult &partition, ApproximationParam ap = ApproximationParam())
 {
     TMesh m;
     std::string error;
     if (!vsa_test::LoadMesh(m, vsa_test::CgalMesh(name), &error)) return name + ": " + error;
     im = BuildIndexedMesh(m);
-    ApproximationParam ap;
     ap.proxyCount = k;
     ap.init = init;
     partition = Approximate(im, ap);
@@ -311,6 +310,34 @@ TEST(MeshingRealMeshes, HalvingGivesUpEarlyOnlyWhereTheInputIntersectsItself)
     EXPECT_GT(intersecting.validity.selfIntersections, 0);
     EXPECT_LT(intersecting.halvingRounds + detail::kHalvingPatience, MeshingParam().halvingRounds);
     EXPECT_EQ(halvingCalls, intersecting.halvingRounds + detail::kHalvingPatience);
+}
+
+TEST(MeshingRealMeshes, InputFacesStartFromTheAnchorsOfTheBestPass)
+{
+    // Two clean inputs, partitioned as the benchmark does under the L2 metric, where halving
+    // leaves a few pairs and the repair passes after the best one only add pairs (dino at k=50:
+    // 4 pairs, then 16 to 37). Keeping input faces must start from the best pass as it was, not
+    // with the anchors those later passes added and pinned: then it removes every pair (from
+    // those anchors it made 25 pairs, and the next pass went over the face budget).
+    ApproximationParam asBenchmarked;
+    asBenchmarked.metric = MetricKind::L2;
+    asBenchmarked.tolerance = 0;
+    asBenchmarked.randomSeed = 1;
+    for (const SweepCase &c : {SweepCase{"dino.off", 50, SeedingMethod::Random},
+                               SweepCase{"turbine.off", 20, SeedingMethod::Hierarchical}}) {
+        IndexedMesh im;
+        ApproximationResult partition;
+        const std::string error = PartitionSample(c.mesh, c.k, c.init, im, partition, asBenchmarked);
+        if (!error.empty()) GTEST_SKIP() << error;
+        ASSERT_TRUE(partition.ok) << partition.error;
+        TMesh out;
+        const MeshingReport r = BuildApproximatingMesh(im, partition.partition, MeshingParam(), out);
+        ASSERT_TRUE(r.ok) << r.error;
+        EXPECT_GT(r.halvingRounds, 0) << c.mesh;
+        EXPECT_GT(r.regionsKeptAsInput, 0) << c.mesh;
+        EXPECT_EQ(r.validity.selfIntersections, 0) << c.mesh;
+        EXPECT_TRUE(r.validity.IsTwoManifold() && r.validity.IsOriented() && r.validity.IsClosed()) << c.mesh;
+    }
 }
 
 TEST(MeshingRealMeshes, TheOutputPassIsTheOneWithFewestIntersections)

@@ -663,12 +663,14 @@ template <class CoordType>
 class CellMesher
 {
 public:
-    /// The best pass so far, its defects and its round (the first pass counting as 0).
+    /// The best pass so far, its defects and its round (the first pass counting as 0), and the
+    /// anchors required and pinned when it ran: later passes add to those.
     struct Attempt
     {
         MeshingPass pass;
         PassDefects defects;
         int repairRound = 0;
+        std::vector<char> requiredAnchors, pinnedAnchors;  ///< per surface vertex
     };
 
     /// `proxies`: UsableProxies; `chordDeviationBound`: ChordDeviationBound; `gapTest`: on
@@ -692,45 +694,41 @@ public:
     /// repairRounds or the repair diverges (see kRepairPatience).
     void Repair()
     {
-        MeshingPass &pass = best_.pass;
-        PassDefects &passDefects = best_.defects;
         if (cb_) cb_(20, "VSA meshing: anchors and triangulation");
-        pass = RunPass(nullptr);
-        if (param_.repairRounds > 0) defects_ = FindDefects(pass);
-        passDefects = defects_;
+        best_.pass = RunPass(nullptr);
+        if (param_.repairRounds > 0) best_.defects = FindDefects(best_.pass);
+        best_.requiredAnchors = requiredAnchors_;
+        best_.pinnedAnchors = pinnedAnchors_;
+        defects_ = best_.defects;
         for (; round_ <= param_.repairRounds && defects_.Count() > 0; ++round_) {
             if (round_ - 1 - best_.repairRound >= kRepairPatience &&
-                defects_.Count() >= kRepairDivergence * passDefects.Count())
+                defects_.Count() >= kRepairDivergence * best_.defects.Count())
                 break;
             if (cb_) cb_(Progress(), "VSA meshing: repairing folds and self-intersections");
-            const MeshingPass &previous = round_ == 1 ? pass : latest_;
+            const MeshingPass &previous = round_ == 1 ? best_.pass : latest_;  // latest_: none yet
             if (RespondToDefects(s_, previous, defects_, requiredAnchors_, pinnedAnchors_) == 0) break;
             MeshingPass next = RunPass(&previous);
             defects_ = FindDefects(next, &previous, &defects_);
             latest_ = std::move(next);
-            if (defects_.BetterThan(passDefects)) {
-                passDefects = defects_;
-                pass = latest_;
-                best_.repairRound = round_;
-            }
+            if (defects_.BetterThan(best_.defects)) KeepLatest(round_);
         }
     }
 
-    /// From the best pass: cells of intersecting faces keep their input faces, until none is
-    /// left; except cells where the input itself intersects, which that cannot help. It costs
-    /// faces: taken only when it leaves fewer intersecting pairs within the budget
-    /// (maxInputFacesGrowth).
+    /// From the best pass, with its anchors (not those of the repair passes after it): cells of
+    /// intersecting faces keep their input faces, until none is left; except cells where the
+    /// input itself intersects, which that cannot help. It costs faces: taken only when it leaves
+    /// fewer intersecting pairs within the budget (maxInputFacesGrowth).
     void KeepInputFaces()
     {
-        MeshingPass &pass = best_.pass;
-        PassDefects &passDefects = best_.defects;
-        const double faceBudget = param_.maxInputFacesGrowth * double(pass.triangles.size());
-        if (passDefects.intersections.empty() || !(param_.maxInputFacesGrowth > 0) ||
-            FacesKeepingInput(s_, pass, passDefects) > faceBudget)
+        const double faceBudget = param_.maxInputFacesGrowth * double(best_.pass.triangles.size());
+        if (best_.defects.intersections.empty() || !(param_.maxInputFacesGrowth > 0) ||
+            FacesKeepingInput(s_, best_.pass, best_.defects) > faceBudget)
             return;
-        size_t fewestIntersections = passDefects.intersections.size();
-        defects_ = passDefects;
-        latest_ = pass;
+        size_t fewestIntersections = best_.defects.intersections.size();
+        latest_ = best_.pass;
+        defects_ = best_.defects;
+        requiredAnchors_ = best_.requiredAnchors;
+        pinnedAnchors_ = best_.pinnedAnchors;
         for (int last = round_ + param_.repairRounds; round_ < last && !defects_.intersections.empty(); ++round_) {
             if (cb_) cb_(Progress(), "VSA meshing: keeping input faces against self-intersections");
             const std::vector<char> flagged = CellsOfIntersectingFaces(s_, latest_, defects_);
@@ -743,9 +741,7 @@ public:
             latest_ = std::move(next);
             if (defects_.intersections.size() < fewestIntersections) {
                 fewestIntersections = defects_.intersections.size();
-                passDefects = defects_;
-                pass = latest_;
-                best_.repairRound = round_;
+                KeepLatest(round_);
             }
         }
     }
@@ -766,6 +762,16 @@ private:
     int round_ = 1;        ///< the next round
 
     int Progress() const { return 20 + 50 * round_ / (2 * param_.repairRounds + 1); }
+
+    /// The last pass becomes the best, from repair round `round`.
+    void KeepLatest(int round)
+    {
+        best_.pass = latest_;
+        best_.defects = defects_;
+        best_.repairRound = round;
+        best_.requiredAnchors = requiredAnchors_;
+        best_.pinnedAnchors = pinnedAnchors_;
+    }
 
     /// A pass on the current required, pinned and input-face cells, derived from `previous`
     /// (nullptr for the first), counted in `passes`.
