@@ -21,9 +21,10 @@ TEST(OffFile, ReadsBlankLinesAndIndentedCommentsThatVcglibWouldCrashOn)
 {
     // The layout of CGAL's prim.off: a line of spaces between vertices and faces, and comments;
     // here also an indented comment and Windows line ends.
-    const std::string path = WriteTemporaryFile("vsa_blank_lines.off",
-                                                "OFF\r\n4 2 0\r\n# vertices\r\n 0 0 0\r\n  1 0 0\r\n"
-                                                " 0 1 0\r\n 0 0 1\r\n  \r\n   # faces\r\n\t\r\n3 0 2 1\r\n 3 0 1 3\r\n");
+    const std::string path =
+        WriteTemporaryFile("vsa_blank_lines.off", "OFF\r\n4 2 0\r\n# vertices\r\n 0 0 0\r\n  1 0 0\r\n"
+                                                  " 0 1 0\r\n 0 0 1\r\n  \r\n   # faces\r\n\t\r\n"
+                                                  "3 0 2 1\r\n 3 0 1 3\r\n");
     vsa_test::BareMesh mesh;
     int loadMask = 0;
     EXPECT_EQ(vsa_bench::ReadOff(mesh, path, loadMask), "");
