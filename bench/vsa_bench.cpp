@@ -3,7 +3,7 @@
 //   vsa-bench --mesh FILE --k N --metric l21|l2 --init random|farthest|hierarchical
 //             --iterations N --seed S [--target-error E] [--tolerance T] [--relaxations R]
 //             [--teleport 0|1] [--anchor-threshold A] [--chord-gap G] [--chord-error F]
-//             [--repair-rounds R] [--halving-rounds H] [--out FILE]
+//             [--repair-rounds R] [--halving-rounds H] [--project-anchors 0|1] [--out FILE]
 // The tolerance defaults to 0 so that --iterations Lloyd iterations run (unless the partition
 // cycles), like CGAL's run(N): per-iteration timings compare. --out writes the approximating
 // mesh with each face coloured by its region (format from the extension: ply, off, obj).
@@ -64,6 +64,10 @@ std::string Parse(int argc, char **argv, Options &o)
             else if (arg == "--chord-error") o.meshing.chordErrorFactor = std::stod(value);
             else if (arg == "--repair-rounds") o.meshing.repairRounds = std::stoi(value);
             else if (arg == "--halving-rounds") o.meshing.halvingRounds = std::stoi(value);
+            else if (arg == "--project-anchors") {
+                if (value != "0" && value != "1") return "--project-anchors takes 0 or 1";
+                o.meshing.projectAnchors = value == "1";
+            }
             else if (arg == "--metric") o.metric = value;
             else if (arg == "--init") o.init = value;
             else return "unknown option " + arg;
