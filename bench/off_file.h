@@ -6,7 +6,6 @@
 #include <vcg/complex/complex.h>  // import_off.h needs it first
 #include <wrap/io_trimesh/import_off.h>
 
-#include <cctype>
 #include <fstream>
 #include <sstream>
 #include <string>
@@ -33,15 +32,6 @@ std::string ReadOff(MeshType &mesh, const std::string &path, int &loadMask)
     std::istringstream stream(text);
     const int code = Importer::OpenStream(mesh, stream, loadMask);
     return code == Importer::NoError ? std::string() : Importer::ErrorMsg(code);
-}
-
-/// Whether `path` ends in ".off", in any case.
-inline bool IsOffPath(const std::string &path)
-{
-    if (path.size() < 4) return false;
-    std::string extension = path.substr(path.size() - 4);
-    for (char &c : extension) c = char(std::tolower(static_cast<unsigned char>(c)));
-    return extension == ".off";
 }
 
 }  // namespace vsa_bench

@@ -37,6 +37,13 @@ struct Options
     vcg::tri::vsa::MeshingParam meshing;
 };
 
+/// "0" or "1" as a bool; anything else throws, which Parse reports as a bad value.
+bool ParseFlag(const std::string &value)
+{
+    if (value != "0" && value != "1") throw std::invalid_argument("not 0 or 1");
+    return value == "1";
+}
+
 /// Parses the command line into `o`; returns an error message, empty when all is well.
 std::string Parse(int argc, char **argv, Options &o)
 {
@@ -55,19 +62,13 @@ std::string Parse(int argc, char **argv, Options &o)
             else if (arg == "--target-error") o.param.targetError = std::stod(value);
             else if (arg == "--tolerance") o.param.tolerance = std::stod(value);
             else if (arg == "--relaxations") o.param.relaxations = std::stoi(value);
-            else if (arg == "--teleport") {
-                if (value != "0" && value != "1") return "--teleport takes 0 or 1";
-                o.param.teleport = value == "1";
-            }
+            else if (arg == "--teleport") o.param.teleport = ParseFlag(value);
             else if (arg == "--anchor-threshold") o.meshing.chordThreshold = std::stod(value);
             else if (arg == "--chord-gap") o.meshing.chordGapThreshold = std::stod(value);
             else if (arg == "--chord-error") o.meshing.chordErrorFactor = std::stod(value);
             else if (arg == "--repair-rounds") o.meshing.repairRounds = std::stoi(value);
             else if (arg == "--halving-rounds") o.meshing.halvingRounds = std::stoi(value);
-            else if (arg == "--project-anchors") {
-                if (value != "0" && value != "1") return "--project-anchors takes 0 or 1";
-                o.meshing.projectAnchors = value == "1";
-            }
+            else if (arg == "--project-anchors") o.meshing.projectAnchors = ParseFlag(value);
             else if (arg == "--metric") o.metric = value;
             else if (arg == "--init") o.init = value;
             else return "unknown option " + arg;
@@ -111,7 +112,7 @@ int main(int argc, char **argv)
     BMesh m;
     int mask = 0;
     std::string readError;
-    if (vsa_bench::IsOffPath(o.mesh)) {
+    if (vcg::tri::io::Importer<BMesh>::FileExtension(o.mesh, "off")) {  // as Importer::Open tells formats apart
         readError = vsa_bench::ReadOff(m, o.mesh, mask);
     } else {
         const int rc = vcg::tri::io::Importer<BMesh>::Open(m, o.mesh.c_str(), mask);

@@ -75,21 +75,6 @@ void CheckCase(const SweepCase &c, bool print, const MeshingParam &param = Meshi
                     seconds);
 }
 
-/// CGAL's sample mesh `name`, indexed into `im`, and our partition of it into k regions (the
-/// other settings from `ap`); why not, when the mesh cannot be read.
-std::string PartitionSample(const std::string &name, int k, SeedingMethod init, IndexedMesh &im,
-                            ApproximationResult &partition, ApproximationParam ap = ApproximationParam())
-{
-    TMesh m;
-    std::string error;
-    if (!vsa_test::LoadMesh(m, vsa_test::CgalMesh(name), &error)) return name + ": " + error;
-    im = BuildIndexedMesh(m);
-    ap.proxyCount = k;
-    ap.init = init;
-    partition = Approximate(im, ap);
-    return "";
-}
-
 }  // namespace
 
 TEST(MeshingRealMeshes, ClosedAndOpenMeshesStayValid)
@@ -200,7 +185,7 @@ TEST(MeshingRealMeshes, DefectsCarriedOverAreThoseFoundFromScratch)
     // all its passes must be that of testing its output.
     IndexedMesh im;
     ApproximationResult partition;
-    const std::string error = PartitionSample("turbine.off", 20, SeedingMethod::Farthest, im, partition);
+    const std::string error = vsa_test::PartitionSample("turbine.off", 20, SeedingMethod::Farthest, im, partition);
     if (!error.empty()) GTEST_SKIP() << error;
     ASSERT_TRUE(partition.ok) << partition.error;
     MeshingSurface s;
@@ -327,7 +312,7 @@ TEST(MeshingRealMeshes, InputFacesStartFromTheAnchorsOfTheBestPass)
                                SweepCase{"turbine.off", 20, SeedingMethod::Hierarchical}}) {
         IndexedMesh im;
         ApproximationResult partition;
-        const std::string error = PartitionSample(c.mesh, c.k, c.init, im, partition, asBenchmarked);
+        const std::string error = vsa_test::PartitionSample(c.mesh, c.k, c.init, im, partition, asBenchmarked);
         if (!error.empty()) GTEST_SKIP() << error;
         ASSERT_TRUE(partition.ok) << partition.error;
         TMesh out;
@@ -361,7 +346,7 @@ TEST(MeshingRealMeshes, ExactRegionsGiveAnExactOutline)
     // input vertex up to rounding.
     IndexedMesh im;
     ApproximationResult partition;
-    const std::string error = PartitionSample("blade.off", 500, ApproximationParam().init, im, partition);
+    const std::string error = vsa_test::PartitionSample("blade.off", 500, ApproximationParam().init, im, partition);
     if (!error.empty()) GTEST_SKIP() << error;
     ASSERT_TRUE(partition.ok) << partition.error;
     vcg::Box3d box;

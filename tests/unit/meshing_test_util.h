@@ -5,6 +5,7 @@
 
 #include "test_meshes.h"
 
+#include <vsa/approximation.h>
 #include <vsa/indexed_mesh.h>
 #include <vsa/proxy.h>
 
@@ -14,11 +15,28 @@
 #include <limits>
 #include <random>
 #include <set>
+#include <string>
 #include <vector>
 
 namespace vsa_test {
 
 using vcg::Point3d;
+
+/// CGAL's sample mesh `name`, indexed into `im`, and our partition of it into k regions (the
+/// other settings from `ap`); why not, when the mesh cannot be read.
+inline std::string PartitionSample(const std::string &name, int k, vcg::tri::vsa::SeedingMethod init,
+                                   vcg::tri::vsa::IndexedMesh &im, vcg::tri::vsa::ApproximationResult &partition,
+                                   vcg::tri::vsa::ApproximationParam ap = vcg::tri::vsa::ApproximationParam())
+{
+    TMesh m;
+    std::string error;
+    if (!LoadMesh(m, CgalMesh(name), &error)) return name + ": " + error;
+    im = vcg::tri::vsa::BuildIndexedMesh(m);
+    ap.proxyCount = k;
+    ap.init = init;
+    partition = vcg::tri::vsa::Approximate(im, ap);
+    return "";
+}
 
 /// A partition labelling face f with label(f) in [0, k), with L2,1-fitted proxies
 /// (area-weighted normal and centroid of each region).

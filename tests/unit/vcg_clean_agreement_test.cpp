@@ -1,8 +1,7 @@
 // Our outputs through vcglib's Clean::SelfIntersections, the test behind MeshLab's "Select Self
 // Intersecting Faces": what a user checking our output in MeshLab sees.
-#include "test_meshes.h"
+#include "meshing_test_util.h"
 
-#include <vsa/approximation.h>
 #include <vsa/meshing.h>
 
 #include <vcg/complex/algorithms/clean.h>
@@ -35,17 +34,13 @@ struct FlaggedFaces
 FlaggedFaces MeshAndFlag(const std::string &name, int k, SeedingMethod init, const MeshingParam &param)
 {
     FlaggedFaces flagged;
-    vsa_test::TMesh m;
-    std::string error;
-    if (!vsa_test::LoadMesh(m, vsa_test::CgalMesh(name), &error)) {
-        ADD_FAILURE() << name << ": " << error;
+    IndexedMesh im;
+    ApproximationResult partition;
+    const std::string error = vsa_test::PartitionSample(name, k, init, im, partition);
+    if (!error.empty() || !partition.ok) {
+        ADD_FAILURE() << error << partition.error;
         return flagged;
     }
-    const IndexedMesh im = BuildIndexedMesh(m);
-    ApproximationParam ap;
-    ap.proxyCount = k;
-    ap.init = init;
-    const ApproximationResult partition = Approximate(im, ap);
     CMesh out;
     const MeshingReport r = BuildApproximatingMesh(im, partition.partition, param, out);
     EXPECT_TRUE(r.ok) << r.error;
