@@ -169,7 +169,9 @@ int main(int argc, char **argv)
             .Add("mesh_passes", meshing.passes)
             .Add("mesh_output_pass", meshing.repairRounds + 1)
             .Add("halving_rounds", meshing.halvingRounds)
-            .Add("cells_halved", meshing.cellsHalved);
+            .Add("cells_halved", meshing.cellsHalved)
+            .Add("carving_rounds", meshing.carvingRounds)
+            .Add("pieces_carved", meshing.piecesCarved);
         vsa_bench::AddOutputQualityKeys(json, m, output);
         if (!o.out.empty() && !WriteApproximation(output, meshing.faceRegion, partition.proxyCount, o.out)) {
             json.Add("error", "cannot write " + o.out).Print();

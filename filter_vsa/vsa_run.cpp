@@ -51,13 +51,14 @@ void Describe(const vsa::ShapeApproximationResult &r, const VsaFilterSettings &s
                .arg(m.anchors);
     log << QString("VSA: regions meshed by flooding %1, by ear-clipping fallback %2, with an extra vertex %3, "
                    "kept as input faces against self-intersections %4, cut into discs %5; "
-                   "cells halved against self-intersections %6")
+                   "cells halved against self-intersections %6, pieces carved out of cells %7")
                .arg(m.regionsByFlooding)
                .arg(m.regionsByEarClipping)
                .arg(m.regionsWithSteinerVertex)
                .arg(m.regionsKeptAsInput)
                .arg(m.regionsCut)
-               .arg(m.cellsHalved);
+               .arg(m.cellsHalved)
+               .arg(m.piecesCarved);
     log << QString("VSA: output: %1").arg(QString::fromStdString(m.validity.Summary()));
     log << QString("VSA: time: seeding %1 s, iterations %2 s, meshing %3 s (%5), total %4 s")
                .arg(r.secondsSeeding, 0, 'f', 3)
@@ -77,6 +78,7 @@ void Describe(const vsa::ShapeApproximationResult &r, const VsaFilterSettings &s
     f["regions_fallback"] = m.regionsByEarClipping + m.regionsWithSteinerVertex + m.regionsKeptAsInput;
     f["regions_kept_as_input"] = m.regionsKeptAsInput;
     f["cells_halved"] = m.cellsHalved;
+    f["pieces_carved"] = m.piecesCarved;
     f["manifold"] = m.validity.IsTwoManifold();
     f["closed"] = m.validity.IsClosed();
     f["oriented"] = m.validity.IsOriented();

@@ -146,6 +146,8 @@ void ExpectApproximation(const HostRun &run, const QString &inputName, const QSt
     ASSERT_TRUE(figures.contains("cells_halved")) << run.Dump();
     EXPECT_TRUE(figures["cells_halved"].isDouble()) << run.Dump();  // a JSON number
     EXPECT_GE(figures["cells_halved"].toInt(-1), 0);
+    ASSERT_TRUE(figures.contains("pieces_carved")) << run.Dump();
+    EXPECT_GE(figures["pieces_carved"].toInt(-1), 0);
     EXPECT_TRUE(figures["manifold"].toBool());
     EXPECT_TRUE(figures["oriented"].toBool());
     EXPECT_EQ(figures["closed"].toBool(), inputClosed);

@@ -30,9 +30,10 @@ struct SweepCase
 /// Partitions and meshes one case; checks what must hold whatever the geometry: the output
 /// is a manifold, oriented, closed where the input is, with the input's components and Euler
 /// characteristic, no degenerate or duplicate face, and no region lost. `progress` goes to the
-/// meshing.
+/// meshing; `ap` is the partition's settings but for k and the seeding.
 void CheckCase(const SweepCase &c, bool print, const MeshingParam &param = MeshingParam(),
-               MeshingReport *report = nullptr, vcg::CallBackPos *progress = nullptr)
+               MeshingReport *report = nullptr, vcg::CallBackPos *progress = nullptr,
+               ApproximationParam ap = ApproximationParam())
 {
     TMesh m;
     std::string error;
@@ -40,7 +41,6 @@ void CheckCase(const SweepCase &c, bool print, const MeshingParam &param = Meshi
     MeshDiagnostics diag;
     const IndexedMesh im = BuildIndexedMesh(m, &diag);
     const MeshValidity in = CheckMeshValidity(im, diag, false);
-    ApproximationParam ap;
     ap.proxyCount = c.k;
     ap.init = c.init;
     const ApproximationResult partition = Approximate(im, ap);
@@ -322,6 +322,36 @@ TEST(MeshingRealMeshes, InputFacesStartFromTheAnchorsOfTheBestPass)
         EXPECT_GT(r.regionsKeptAsInput, 0) << c.mesh;
         EXPECT_EQ(r.validity.selfIntersections, 0) << c.mesh;
         EXPECT_TRUE(r.validity.IsTwoManifold() && r.validity.IsOriented() && r.validity.IsClosed()) << c.mesh;
+    }
+}
+
+TEST(MeshingRealMeshes, CarvedPiecesFinishWhereWholeCellsCannot)
+{
+    // Two clean inputs, under dialog settings where halving leaves a few intersecting pairs and
+    // keeping the cells concerned as input faces cannot remove them: refined_elephant at k=20
+    // with teleportation off (2 pairs; those cells would make 2515 faces, over the budget of
+    // 1300), and homer at k=50 after one Lloyd iteration (3 pairs; keeping the cells made 9, and
+    // the next pass broke the budget). Pieces carved out of those cells remove every pair.
+    struct CarvingCase
+    {
+        SweepCase sweep;
+        ApproximationParam partition;
+    };
+    ApproximationParam noTeleport, oneIteration;
+    noTeleport.teleport = false;
+    oneIteration.maxIterations = 1;
+    for (ApproximationParam *ap : {&noTeleport, &oneIteration}) {  // as benchmarked
+        ap->tolerance = 0;
+        ap->randomSeed = 1;
+    }
+    for (const CarvingCase &c : {CarvingCase{{"refined_elephant.off", 20, SeedingMethod::Random}, noTeleport},
+                                 CarvingCase{{"homer.off", 50, SeedingMethod::Hierarchical}, oneIteration}}) {
+        MeshingReport r;
+        CheckCase(c.sweep, false, MeshingParam(), &r, nullptr, c.partition);
+        EXPECT_GT(r.carvingRounds, 0) << c.sweep.mesh;
+        EXPECT_LE(r.carvingRounds, detail::kCarvingRounds) << c.sweep.mesh;
+        EXPECT_GE(r.piecesCarved, r.carvingRounds) << c.sweep.mesh;
+        EXPECT_EQ(r.validity.selfIntersections, 0) << c.sweep.mesh;
     }
 }
 

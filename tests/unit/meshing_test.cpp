@@ -80,6 +80,31 @@ Partition PartitionFlatSquare(TMesh &square, IndexedMesh &im, const std::functio
     });
 }
 
+/// The flat square partitioned by a label (see PartitionFlatSquare), and its meshing surface.
+struct FlatSquareSurface
+{
+    TMesh square;
+    IndexedMesh im;
+    Partition partition;
+    MeshingSurface s;
+
+    explicit FlatSquareSurface(const std::function<int(int, double)> &label)
+    {
+        partition = PartitionFlatSquare(square, im, label);
+        std::string error;
+        EXPECT_TRUE(BuildMeshingSurface(im, partition.faceRegion, 3, s, error)) << error;
+    }
+};
+
+/// A disc region in the middle of the flat square, a one-face region, and the rest around them.
+int DiscOneFaceAndRest(int f, double r) { return f == 0 ? 2 : (r < 0.5 ? 0 : 1); }
+
+/// The faces of cell c of `s`, in the surface's order.
+std::vector<int> FacesOfCell(const MeshingSurface &s, int c)
+{
+    return std::vector<int>(s.cellFaces.begin() + s.cellFaceOffset[c], s.cellFaces.begin() + s.cellFaceOffset[c + 1]);
+}
+
 }  // namespace
 
 TEST(Meshing, CubeSixRegionsGivesTheEightCorners)
@@ -445,19 +470,15 @@ TEST(Meshing, IslandAndRingRegionsOnAFlatSquare)
 
 TEST(Meshing, HalvingACellGivesTwoDiscsOfItsRegionAndLeavesTheOthers)
 {
-    // A flat square: a disc region in the middle, a one-face region, and the rest around them.
-    TMesh square;
-    IndexedMesh im;
-    const Partition partition =
-        PartitionFlatSquare(square, im, [](int f, double r) { return f == 0 ? 2 : (r < 0.5 ? 0 : 1); });
-    MeshingSurface s;
+    FlatSquareSurface flat(DiscOneFaceAndRest);
+    MeshingSurface &s = flat.s;
     std::string error;
-    ASSERT_TRUE(BuildMeshingSurface(im, partition.faceRegion, 3, s, error)) << error;
     auto facesOfCells = [](const MeshingSurface &m) {
         std::set<std::set<int>> cells;
-        for (int c = 0; c < m.CellCount(); ++c)
-            cells.insert(std::set<int>(m.cellFaces.begin() + m.cellFaceOffset[c],
-                                       m.cellFaces.begin() + m.cellFaceOffset[c + 1]));
+        for (int c = 0; c < m.CellCount(); ++c) {
+            const std::vector<int> faces = FacesOfCell(m, c);
+            cells.insert(std::set<int>(faces.begin(), faces.end()));
+        }
         return cells;
     };
     const std::set<std::set<int>> before = facesOfCells(s);
@@ -468,8 +489,8 @@ TEST(Meshing, HalvingACellGivesTwoDiscsOfItsRegionAndLeavesTheOthers)
     }
     ASSERT_GE(disc, 0);
     ASSERT_GE(single, 0);
-    const std::set<int> discFaces(s.cellFaces.begin() + s.cellFaceOffset[disc],
-                                  s.cellFaces.begin() + s.cellFaceOffset[disc + 1]);
+    const std::vector<int> discList = FacesOfCell(s, disc);
+    const std::set<int> discFaces(discList.begin(), discList.end());
     ASSERT_GT(discFaces.size(), 20u);
 
     std::vector<char> flagged(s.CellCount(), 0);
@@ -482,8 +503,8 @@ TEST(Meshing, HalvingACellGivesTwoDiscsOfItsRegionAndLeavesTheOthers)
     // disc (one boundary loop, traced above) with a fair share of the faces.
     std::set<int> halves;
     for (int c = 0; c < s.CellCount(); ++c) {
-        const std::set<int> faces(s.cellFaces.begin() + s.cellFaceOffset[c],
-                                  s.cellFaces.begin() + s.cellFaceOffset[c + 1]);
+        const std::vector<int> list = FacesOfCell(s, c);
+        const std::set<int> faces(list.begin(), list.end());
         if (s.cellRegion[c] != 0) {
             EXPECT_TRUE(before.count(faces)) << "cell " << c;
             continue;
@@ -497,11 +518,116 @@ TEST(Meshing, HalvingACellGivesTwoDiscsOfItsRegionAndLeavesTheOthers)
 
     // The meshing halves nothing where nothing intersects.
     MeshingRun run;
-    Mesh(square, partition, MeshingParam(), run);
+    Mesh(flat.square, flat.partition, MeshingParam(), run);
     ExpectValidWithInputTopology(run);
     EXPECT_EQ(run.report.validity.selfIntersections, 0);
     EXPECT_EQ(run.report.halvingRounds, 0);
     EXPECT_EQ(run.report.cells, int(before.size()));
+}
+
+TEST(Meshing, CarvingCutsAShareOfTheCellAroundItsSeedAndLeavesTheOthers)
+{
+    // The flat square's middle disc, carved around its central face: the faces nearest to that
+    // face (a quarter of the disc) make a cell, and the ring left around them is cut into discs.
+    // A seed in a piece already cut adds none, and a cell of one face cannot be carved.
+    FlatSquareSurface flat(DiscOneFaceAndRest);
+    MeshingSurface &s = flat.s;
+    const IndexedMesh &im = flat.im;
+    ASSERT_EQ(s.FaceCount(), im.FaceCount());
+    std::vector<std::vector<int>> before(s.CellCount());
+    for (int c = 0; c < s.CellCount(); ++c) before[c] = FacesOfCell(s, c);
+    int center = -1;
+    for (int f = 0; f < s.FaceCount(); ++f)
+        if (s.faceRegion[f] == 0 && (center < 0 || vsa_test::FaceCentroid(im, f).Norm() <
+                                                       vsa_test::FaceCentroid(im, center).Norm()))
+            center = f;
+    ASSERT_GE(center, 0);
+    const int disc = s.faceCell[center];
+    const int discFaces = int(before[disc].size());
+    ASSERT_GT(discFaces, 40);
+    int beside = -1;  // a neighbour of the central face in the disc
+    for (int g : s.neighbors[center])
+        if (g >= 0 && s.faceCell[g] == disc) beside = g;
+    ASSERT_GE(beside, 0);
+    std::vector<int> hop(s.FaceCount(), -1);  // from the central face, within the disc
+    std::vector<int> order = {center};
+    hop[center] = 0;
+    for (size_t head = 0; head < order.size(); ++head)
+        for (int g : s.neighbors[order[head]])
+            if (g >= 0 && s.faceCell[g] == disc && hop[g] < 0) {
+                hop[g] = hop[order[head]] + 1;
+                order.push_back(g);
+            }
+    ASSERT_EQ(int(order.size()), discFaces);
+
+    EXPECT_EQ(CarveCells(s, {center, beside, 0}), 1);
+    std::string error;
+    ASSERT_TRUE(detail::BuildCellsAndLoops(s, error)) << error;
+    // The other cells are as they were.
+    for (int c = 0; c < s.CellCount(); ++c) {
+        if (s.cellRegion[c] == 0) continue;
+        EXPECT_NE(std::find(before.begin(), before.end(), FacesOfCell(s, c)), before.end()) << "cell " << c;
+    }
+    // The piece: the central face and the faces nearest to it, no farther than any other.
+    const int piece = s.faceCell[center];
+    EXPECT_EQ(s.faceCell[beside], piece);
+    EXPECT_EQ(s.cellFaceOffset[piece + 1] - s.cellFaceOffset[piece], discFaces / detail::kCarvedShare);
+    int farthestIn = 0, nearestOut = s.FaceCount();
+    for (int f : before[disc]) {
+        if (s.faceCell[f] == piece)
+            farthestIn = std::max(farthestIn, hop[f]);
+        else
+            nearestOut = std::min(nearestOut, hop[f]);
+    }
+    EXPECT_LE(farthestIn, nearestOut);
+    // The ring around it: discs of region 0 (each traced with one loop above), with the piece
+    // covering the disc's faces.
+    EXPECT_GE(std::count(s.cellRegion.begin(), s.cellRegion.end(), 0), 3);
+    int regionFaces = 0;
+    for (int c = 0; c < s.CellCount(); ++c)
+        if (s.cellRegion[c] == 0) regionFaces += s.cellFaceOffset[c + 1] - s.cellFaceOffset[c];
+    EXPECT_EQ(regionFaces, discFaces);
+}
+
+TEST(Meshing, CarvingSeedsAreWhereTheCellPassesNearestToTheFaceItMeets)
+{
+    // Two output faces of the flat square said to intersect: one of the middle disc's cell, one
+    // just above an input face of the ring (cut into two cells). The disc's seed is its input face
+    // nearest to the second; excluded cells, and cells kept as input faces, get no seed.
+    const FlatSquareSurface flat([](int, double r) { return r < 0.5 ? 0 : 1; });
+    const MeshingSurface &s = flat.s;
+    const IndexedMesh &im = flat.im;
+    int disc = -1;
+    for (int c = 0; c < s.CellCount(); ++c)
+        if (s.cellRegion[c] == 0) disc = c;
+    ASSERT_GE(disc, 0);
+    int nearestInDisc = -1, above = -1;  // the disc's face nearest to the ring face at (0.6, 0)
+    const Point3d target(0.6, 0, 0);
+    for (int f = 0; f < s.FaceCount(); ++f) {
+        const double distance = (vsa_test::FaceCentroid(im, f) - target).Norm();
+        auto nearer = [&](int g) { return g < 0 || distance < (vsa_test::FaceCentroid(im, g) - target).Norm(); };
+        if (s.faceCell[f] == disc && nearer(nearestInDisc)) nearestInDisc = f;
+        if (s.faceCell[f] != disc && nearer(above)) above = f;
+    }
+    const int ring = s.faceCell[above];
+    detail::MeshingPass pass;
+    const Point3d lifted = vsa_test::FaceCentroid(im, above) + Point3d(0, 0, 0.01);
+    pass.positions = {Point3d(-0.4, -0.3, 0),           Point3d(0.4, -0.3, 0),
+                      Point3d(0, 0.4, 0),               lifted + Point3d(-0.01, -0.01, 0),
+                      lifted + Point3d(0.01, -0.01, 0), lifted + Point3d(0, 0.01, 0)};
+    pass.triangles = {{0, 1, 2}, {3, 4, 5}};
+    pass.triangleCell = {disc, ring};
+    pass.cellMethod.assign(s.CellCount(), CellMethod::Flooding);
+    detail::PassDefects defects;
+    defects.intersections = {{0, 1}};
+    std::vector<char> excluded(s.CellCount(), 0);
+    excluded[ring] = 1;
+    EXPECT_EQ(detail::CarvingSeeds(s, pass, defects, excluded), std::vector<int>{nearestInDisc});
+    pass.cellMethod[disc] = CellMethod::InputFaces;
+    excluded[ring] = 0;
+    const std::vector<int> ringOnly = detail::CarvingSeeds(s, pass, defects, excluded);
+    ASSERT_EQ(ringOnly.size(), 1u);
+    EXPECT_EQ(s.faceCell[ringOnly[0]], ring);
 }
 
 TEST(Meshing, ClosedRegionsWithoutBoundary)

@@ -70,13 +70,16 @@ struct MeshingParam
     /// halved (see HalveCells) and meshed again, at most this many times: a region whose flat
     /// triangulation spans a curved part of the shape (turbine's blades at k=20) cuts through
     /// distant parts of the output, which more anchors on its outline cannot fix, while its
-    /// halves follow the shape more closely. Each halving costs a meshing. 0: never (and so does
-    /// repairRounds = 0, which looks for no intersections).
+    /// halves follow the shape more closely. Each halving costs a meshing. 0: never, nor any
+    /// carving (see maxInputFacesGrowth): cells stay as the regions are cut into discs; so does
+    /// repairRounds = 0, which looks for no intersections.
     int halvingRounds = 8;
     /// Last resort, when halving leaves self-intersections: the regions concerned keep their
     /// input faces, provided that at most multiplies the output's faces by this (0: never).
-    /// Beyond that the output keeps its intersections, reported: k is too small for the shape,
-    /// or the input intersects itself there.
+    /// Where that breaks the budget or leaves pairs, a piece of each cell concerned, around the
+    /// intersection, is carved out as a cell of its own and that is tried again (see
+    /// kCarvingRounds; not with halvingRounds = 0). Beyond that the output keeps its
+    /// intersections, reported: k is too small for the shape, or the input intersects itself there.
     double maxInputFacesGrowth = 2;
 };
 
@@ -95,6 +98,8 @@ struct MeshingReport
     int cells = 0;                     ///< discs triangulated (regions, or their pieces)
     int cellsHalved = 0;    ///< cells halved on the way to the output (see MeshingParam::halvingRounds)
     int halvingRounds = 0;  ///< rounds of halving the output took
+    int piecesCarved = 0;   ///< pieces carved out of cells on the way to the output (see maxInputFacesGrowth)
+    int carvingRounds = 0;  ///< rounds of carving the output took
 
     int anchors = 0;
     int junctionAnchors = 0;     ///< where three regions (or cells) meet, the border counting as one
@@ -136,6 +141,9 @@ struct MeshingReport
         if (regionsCut) s << "; " << regionsCut << " regions cut into discs";
         if (halvingRounds)
             s << "; " << cellsHalved << " cells halved against self-intersections (" << halvingRounds << " rounds)";
+        if (carvingRounds)
+            s << "; " << piecesCarved << " pieces carved out of cells against self-intersections (" << carvingRounds
+              << " rounds)";
         if (emptyRegions) s << "; " << emptyRegions << " empty proxies";
         if (ignoredFaces) s << "; " << ignoredFaces << " input faces with a repeated vertex ignored";
         if (splitVertices) s << "; non-manifold input vertices split into " << splitVertices << " extra vertices";
@@ -167,6 +175,12 @@ constexpr size_t kRepairDivergence = 2;
 /// keep input faces (homer, random: 18 pairs, then 12, 2, 2); now every clean input ends
 /// without any, at k = 20, 50, 100 and 200, in at most 8 rounds.
 constexpr int kHalvingPatience = 2;
+
+/// Carving (see CarveCells) goes on at most this many rounds, each from the one before, while
+/// intersecting pairs remain: a round's pieces can leave pairs that the next one's smaller
+/// pieces remove (refined_elephant at k=20, anchors unprojected: 2 pairs with whole cells over
+/// the budget, 2 after a first carving, none after a second).
+constexpr int kCarvingRounds = 4;
 
 /// Proxies usable as planes: unit normals, finite points. A proxy given without a usable
 /// plane gets its region's area-weighted plane instead (nothing downstream divides by it).
@@ -557,6 +571,39 @@ inline std::vector<char> CellsOfIntersectingFaces(const MeshingSurface &s, const
     return flagged;
 }
 
+/// Where to carve pieces (CarveCells) against the intersecting pairs of `pass`: for each face of
+/// a pair whose cell is triangulated (not kept as input faces) and not flagged in `excluded`,
+/// the input face of that cell whose centroid is nearest to the other face of the pair. There
+/// the cell's input passes closest to what its flat triangle cuts through.
+inline std::vector<int> CarvingSeeds(const MeshingSurface &s, const MeshingPass &pass, const PassDefects &defects,
+                                     const std::vector<char> &excluded)
+{
+    std::vector<int> seeds;
+    auto seedFor = [&](int f, int other) {
+        const int c = pass.triangleCell[f];
+        if (pass.cellMethod[c] == CellMethod::InputFaces || excluded[c]) return;
+        const auto &corner = pass.triangles[other];
+        const vcg::Triangle3<double> crossed(pass.positions[corner[0]], pass.positions[corner[1]],
+                                             pass.positions[corner[2]]);
+        int nearest = -1;
+        double nearestDistance = std::numeric_limits<double>::infinity();
+        for (int k = s.cellFaceOffset[c]; k < s.cellFaceOffset[c + 1]; ++k) {
+            const auto &t = s.faces[s.cellFaces[k]];
+            double distance;
+            Point3d closest;
+            TrianglePointDistance(crossed, (s.positions[t[0]] + s.positions[t[1]] + s.positions[t[2]]) / 3.0,
+                                  distance, closest);
+            if (distance < nearestDistance) nearestDistance = distance, nearest = s.cellFaces[k];
+        }
+        if (nearest >= 0) seeds.push_back(nearest);
+    };
+    for (const auto &[f, g] : defects.intersections) {
+        seedFor(f, g);
+        seedFor(g, f);
+    }
+    return seeds;
+}
+
 /// The output's face count if the cells of the intersecting faces of `pass` kept their input
 /// faces: a first round that would already break the budget need not be tried.
 inline double FacesKeepingInput(const MeshingSurface &s, const MeshingPass &pass, const PassDefects &defects)
@@ -717,12 +764,10 @@ public:
     /// From the best pass, with its anchors (not those of the repair passes after it): cells of
     /// intersecting faces keep their input faces, until none is left; except cells where the
     /// input itself intersects, which that cannot help. It costs faces: taken only when it leaves
-    /// fewer intersecting pairs within the budget (maxInputFacesGrowth).
-    void KeepInputFaces()
+    /// fewer intersecting pairs within `faceBudget` output faces.
+    void KeepInputFaces(double faceBudget)
     {
-        const double faceBudget = param_.maxInputFacesGrowth * double(best_.pass.triangles.size());
-        if (best_.defects.intersections.empty() || !(param_.maxInputFacesGrowth > 0) ||
-            FacesKeepingInput(s_, best_.pass, best_.defects) > faceBudget)
+        if (best_.defects.intersections.empty() || FacesKeepingInput(s_, best_.pass, best_.defects) > faceBudget)
             return;
         size_t fewestIntersections = best_.defects.intersections.size();
         latest_ = best_.pass;
@@ -880,7 +925,50 @@ MeshingReport BuildApproximatingMesh(const IndexedMesh &in, const Partition &par
                 break;
         }
     }
-    best->KeepInputFaces();
+    const double faceBudget = param.maxInputFacesGrowth * double(best->Best().pass.triangles.size());
+    best->KeepInputFaces(faceBudget);
+    // Where pairs remain (keeping whole cells as input faces broke the budget, or moved the
+    // pairs), each cell of an intersecting face has a piece carved out around the intersection
+    // (where the input can be kept at little cost), and the carved surface is meshed again, with
+    // the same last resort and the same budget; each round from the one before, the output from
+    // the best. Where the input intersects itself, a round that removes no pair is the last.
+    if (param.maxInputFacesGrowth > 0 && param.halvingRounds > 0) {
+        std::shared_ptr<MeshingSurface> latest = bestSurface;
+        const Mesher *latestMesher = best.get();
+        std::unique_ptr<Mesher> latestAttempt;  // owns latestMesher when it is not the best
+        int carvedSoFar = 0;
+        bool inputIntersectsThere = false;
+        for (int round = 1; round <= detail::kCarvingRounds && !best->Best().defects.intersections.empty(); ++round) {
+            if (cb) cb(80, "VSA meshing: carving cells");
+            const detail::MeshingPass &pass = latestMesher->Best().pass;
+            const detail::PassDefects &defects = latestMesher->Best().defects;
+            const std::vector<char> intersectingInput =
+                inputIntersections.CellsAmong(*latest, detail::CellsOfIntersectingFaces(*latest, pass, defects));
+            for (char intersects : intersectingInput) inputIntersectsThere |= intersects;
+            auto carved = std::make_shared<MeshingSurface>(*latest);
+            const int pieces = CarveCells(*carved, detail::CarvingSeeds(*latest, pass, defects, intersectingInput));
+            latestAttempt.reset();  // done with its pass, before its surface goes
+            std::string internalError;  // as for halving
+            if (pieces == 0 || !detail::BuildCellsAndLoops(*carved, internalError)) break;
+            carvedSoFar += pieces;
+            std::unique_ptr<Mesher> attempt = mesherOf(*carved, nullptr);
+            attempt->Repair();
+            attempt->KeepInputFaces(faceBudget);
+            latest = carved;
+            latestMesher = attempt.get();
+            if (attempt->Best().defects.intersections.size() < best->Best().defects.intersections.size() &&
+                double(attempt->Best().pass.triangles.size()) <= faceBudget) {
+                best = std::move(attempt);
+                bestSurface = carved;
+                report.carvingRounds = round;
+                report.piecesCarved = carvedSoFar;
+            } else if (inputIntersectsThere) {
+                break;
+            } else {
+                latestAttempt = std::move(attempt);
+            }
+        }
+    }
     const MeshingSurface &s = *bestSurface;
     const detail::MeshingPass &pass = best->Best().pass;
     const detail::PassDefects &passDefects = best->Best().defects;
