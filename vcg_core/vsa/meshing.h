@@ -888,6 +888,16 @@ MeshingReport BuildApproximatingMesh(const IndexedMesh &in, const Partition &par
     std::shared_ptr<MeshingSurface> bestSurface = surface;
     std::unique_ptr<Mesher> best = mesherOf(*surface, cb);
     best->Repair();
+    // A surface whose pieces were split (halved or carved), with its cells rebuilt and meshed
+    // with repairs (progress: one step per round); nullptr if its cells do not trace, which cells
+    // grown as discs always do: the best output so far stays then.
+    auto meshSplit = [&](MeshingSurface &split) -> std::unique_ptr<Mesher> {
+        std::string internalError;
+        if (!detail::BuildCellsAndLoops(split, internalError)) return nullptr;
+        std::unique_ptr<Mesher> mesher = mesherOf(split, nullptr);
+        mesher->Repair();
+        return mesher;
+    };
     // Where the output still intersects itself, the cells of the intersecting faces are halved
     // and meshed again, each round from the one before; the output comes from the round with the
     // fewest intersecting pairs (the earliest on ties), and keeps input faces only if that still
@@ -906,11 +916,9 @@ MeshingReport BuildApproximatingMesh(const IndexedMesh &in, const Partition &par
             }
             auto halved = std::make_shared<MeshingSurface>(*latest);
             const int cellsHalved = HalveCells(*halved, flagged);
-            std::string internalError;  // cells grown as discs always trace: keep the best output, if not
-            if (cellsHalved == 0 || !detail::BuildCellsAndLoops(*halved, internalError)) break;
+            std::unique_ptr<Mesher> attempt = cellsHalved > 0 ? meshSplit(*halved) : nullptr;
+            if (!attempt) break;
             halvedSoFar += cellsHalved;
-            std::unique_ptr<Mesher> attempt = mesherOf(*halved, nullptr);  // progress: one step per round
-            attempt->Repair();
             const detail::PassDefects &defects = attempt->Best().defects;
             flagged = detail::CellsOfIntersectingFaces(*halved, attempt->Best().pass, defects);
             latest = halved;
@@ -934,28 +942,25 @@ MeshingReport BuildApproximatingMesh(const IndexedMesh &in, const Partition &par
     // the best. Where the input intersects itself, a round that removes no pair is the last.
     if (param.maxInputFacesGrowth > 0 && param.halvingRounds > 0) {
         std::shared_ptr<MeshingSurface> latest = bestSurface;
-        const Mesher *latestMesher = best.get();
-        std::unique_ptr<Mesher> latestAttempt;  // owns latestMesher when it is not the best
+        std::unique_ptr<Mesher> latestAttempt;  // the last round's, unless it became the best
         int carvedSoFar = 0;
         bool inputIntersectsThere = false;
         for (int round = 1; round <= detail::kCarvingRounds && !best->Best().defects.intersections.empty(); ++round) {
             if (cb) cb(80, "VSA meshing: carving cells");
-            const detail::MeshingPass &pass = latestMesher->Best().pass;
-            const detail::PassDefects &defects = latestMesher->Best().defects;
+            const Mesher &latestMesher = latestAttempt ? *latestAttempt : *best;
+            const detail::MeshingPass &pass = latestMesher.Best().pass;
+            const detail::PassDefects &defects = latestMesher.Best().defects;
             const std::vector<char> intersectingInput =
                 inputIntersections.CellsAmong(*latest, detail::CellsOfIntersectingFaces(*latest, pass, defects));
             for (char intersects : intersectingInput) inputIntersectsThere |= intersects;
             auto carved = std::make_shared<MeshingSurface>(*latest);
             const int pieces = CarveCells(*carved, detail::CarvingSeeds(*latest, pass, defects, intersectingInput));
             latestAttempt.reset();  // done with its pass, before its surface goes
-            std::string internalError;  // as for halving
-            if (pieces == 0 || !detail::BuildCellsAndLoops(*carved, internalError)) break;
+            std::unique_ptr<Mesher> attempt = pieces > 0 ? meshSplit(*carved) : nullptr;
+            if (!attempt) break;
             carvedSoFar += pieces;
-            std::unique_ptr<Mesher> attempt = mesherOf(*carved, nullptr);
-            attempt->Repair();
             attempt->KeepInputFaces(faceBudget);
             latest = carved;
-            latestMesher = attempt.get();
             if (attempt->Best().defects.intersections.size() < best->Best().defects.intersections.size() &&
                 double(attempt->Best().pass.triangles.size()) <= faceBudget) {
                 best = std::move(attempt);
