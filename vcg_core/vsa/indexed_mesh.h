@@ -117,46 +117,48 @@ inline void BuildOffsets(const std::vector<int> &keyOfItem, int keyCount, std::v
 inline void LinkFaces(IndexedMesh &im, MeshDiagnostics &diag)
 {
     const int faceCount = im.FaceCount();
-    struct HalfEdge { uint64_t key; int faceEdge; };
-    std::vector<HalfEdge> halfEdges;
-    std::vector<int> lowerVertex;
-    halfEdges.reserve(size_t(faceCount) * 3);
-    lowerVertex.reserve(size_t(faceCount) * 3);
-    for (int f = 0; f < faceCount; ++f)
-        for (int i = 0; i < 3; ++i) {
-            const int a = im.faces[f][i], b = im.faces[f][(i + 1) % 3];
-            if (a == b) continue;  // an edge of a degenerate face joins nothing
-            halfEdges.push_back({(uint64_t(uint32_t(std::min(a, b))) << 32) | uint32_t(std::max(a, b)), 3 * f + i});
-            lowerVertex.push_back(std::min(a, b));
-        }
-    // Sorted by (key, faceEdge): bucketed by lower vertex first (in faceEdge order), then each
-    // small bucket sorted, which costs a fraction of one sort of all of them.
-    std::vector<int> bucketOffset, order;
-    BuildOffsets(lowerVertex, im.VertexCount(), bucketOffset, order);
-    std::vector<HalfEdge> edges;
-    edges.reserve(order.size());
-    for (int e : order) edges.push_back(halfEdges[e]);
-    for (size_t v = 0; v + 1 < bucketOffset.size(); ++v)
-        std::sort(edges.begin() + bucketOffset[v], edges.begin() + bucketOffset[v + 1],
-                  [](const HalfEdge &x, const HalfEdge &y) {
-                      return x.key != y.key ? x.key < y.key : x.faceEdge < y.faceEdge;
-                  });
+    // Half-edges bucketed by their lower vertex (a counting sort, in faceEdge order), each
+    // holding only its upper vertex: on big meshes the cost is memory traffic, not comparisons.
+    struct HalfEdge { int upperVertex, faceEdge; };
+    std::vector<int> bucketOffset(size_t(im.VertexCount()) + 1, 0);
+    for (const auto &t : im.faces)
+        for (int i = 0; i < 3; ++i)
+            if (t[i] != t[(i + 1) % 3]) ++bucketOffset[size_t(std::min(t[i], t[(i + 1) % 3])) + 1];
+    std::partial_sum(bucketOffset.begin(), bucketOffset.end(), bucketOffset.begin());
+    std::vector<HalfEdge> edges(size_t(bucketOffset.back()));
+    {
+        std::vector<int> fill(bucketOffset.begin(), bucketOffset.end() - 1);
+        for (int f = 0; f < faceCount; ++f)
+            for (int i = 0; i < 3; ++i) {
+                const int a = im.faces[f][i], b = im.faces[f][(i + 1) % 3];
+                if (a == b) continue;  // an edge of a degenerate face joins nothing
+                edges[fill[std::min(a, b)]++] = {std::max(a, b), 3 * f + i};
+            }
+    }
+    // Each small bucket sorted by (upper vertex, faceEdge): then the half-edges of one edge
+    // are consecutive, in faceEdge order.
     im.neighbors.assign(faceCount, {-1, -1, -1});
-    for (size_t lo = 0; lo < edges.size();) {
-        size_t hi = lo + 1;
-        while (hi < edges.size() && edges[hi].key == edges[lo].key) ++hi;
-        if (hi - lo == 1) {
-            ++diag.borderEdges;
-        } else if (hi - lo == 2) {
-            const int fa = edges[lo].faceEdge / 3, ia = edges[lo].faceEdge % 3;
-            const int fb = edges[lo + 1].faceEdge / 3, ib = edges[lo + 1].faceEdge % 3;
-            im.neighbors[fa][ia] = fb;
-            im.neighbors[fb][ib] = fa;
-            if (im.faces[fa][ia] == im.faces[fb][ib]) ++diag.inconsistentEdges;
-        } else {
-            ++diag.nonManifoldEdges;
+    for (size_t v = 0; v + 1 < bucketOffset.size(); ++v) {
+        const auto first = edges.begin() + bucketOffset[v], last = edges.begin() + bucketOffset[v + 1];
+        std::sort(first, last, [](const HalfEdge &x, const HalfEdge &y) {
+            return x.upperVertex != y.upperVertex ? x.upperVertex < y.upperVertex : x.faceEdge < y.faceEdge;
+        });
+        for (auto lo = first; lo != last;) {
+            auto hi = lo + 1;
+            while (hi != last && hi->upperVertex == lo->upperVertex) ++hi;
+            if (hi - lo == 1) {
+                ++diag.borderEdges;
+            } else if (hi - lo == 2) {
+                const int fa = lo[0].faceEdge / 3, ia = lo[0].faceEdge % 3;
+                const int fb = lo[1].faceEdge / 3, ib = lo[1].faceEdge % 3;
+                im.neighbors[fa][ia] = fb;
+                im.neighbors[fb][ib] = fa;
+                if (im.faces[fa][ia] == im.faces[fb][ib]) ++diag.inconsistentEdges;
+            } else {
+                ++diag.nonManifoldEdges;
+            }
+            lo = hi;
         }
-        lo = hi;
     }
 }
 
@@ -216,6 +218,10 @@ IndexedMesh BuildIndexedMesh(const MeshType &m, MeshDiagnostics *diagnostics = n
     IndexedMesh im;
     MeshDiagnostics diag;
     std::vector<int> vertexIndex(m.vert.size(), -1);
+    im.positions.reserve(m.vert.size());
+    im.sourceVertex.reserve(m.vert.size());
+    im.faces.reserve(m.face.size());
+    im.sourceFace.reserve(m.face.size());
     for (size_t fi = 0; fi < m.face.size(); ++fi) {
         const auto &face = m.face[fi];
         if (face.IsD()) continue;
