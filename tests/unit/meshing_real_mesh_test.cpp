@@ -355,6 +355,24 @@ TEST(MeshingRealMeshes, CarvedPiecesFinishWhereWholeCellsCannot)
     }
 }
 
+TEST(MeshingRealMeshes, CellsWithAFaceWithoutAreaAreNotKeptAsInputFaces)
+{
+    // mpi.off (180 faces) intersects itself (174 pairs) and has a face whose three distinct
+    // vertices are collinear. At k=100 after one Lloyd iteration, farthest and hierarchical, the
+    // cell of that face had intersecting output faces and kept its input faces, putting the
+    // zero-area face in the output. Such a cell keeps its triangulation: CheckCase asserts no
+    // degenerate face, and other cells are still kept as input.
+    ApproximationParam oneIteration;  // as benchmarked
+    oneIteration.maxIterations = 1;
+    oneIteration.tolerance = 0;
+    oneIteration.randomSeed = 1;
+    for (SeedingMethod init : {SeedingMethod::Farthest, SeedingMethod::Hierarchical}) {
+        MeshingReport r;
+        CheckCase({"mpi.off", 100, init}, false, MeshingParam(), &r, nullptr, oneIteration);
+        EXPECT_GT(r.regionsKeptAsInput, 0) << int(init);
+    }
+}
+
 TEST(MeshingRealMeshes, TheOutputPassIsTheOneWithFewestIntersections)
 {
     // Boeing at k=50: an early pass has the fewest defects in all (hundreds of intersecting

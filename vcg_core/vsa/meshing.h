@@ -652,7 +652,8 @@ inline bool WritesPass(const IndexedMesh &written, const MeshingPass &pass)
 /// of intersecting output faces, which neither keeping input faces nor halving can mend
 /// there): testing the whole input costs more than a pass. Input faces tested stay known
 /// from one surface to the next; the input's faces go in one grid, built at the first test,
-/// and each test visits the grid cells of the faces it tests only.
+/// and each test visits the grid cells of the faces it tests only. Also where the input has
+/// faces without area, which no cell may keep.
 class InputIntersections
 {
 public:
@@ -675,8 +676,7 @@ public:
             }
         }
         if (!freshFaces.empty() && !grid_) {
-            degenerate_ = DegenerateFaceMask(in_);
-            shape_ = ShapesOfFaces(in_, degenerate_);
+            shape_ = ShapesOfFaces(in_, Degenerate());
             grid_ = std::make_unique<SurfaceGrid>(in_.positions, in_.faces, degenerate_);
         }
         std::vector<int> metFrom(freshFaces.empty() ? 0 : in_.FaceCount(), -1);
@@ -686,16 +686,35 @@ public:
                 in_, shape_, *grid_, f, metFrom, [&](int g) { return fresh[g] && g < f; },  // tested from g
                 [&](int g) { intersecting_[f] = intersecting_[g] = 1; });
         }
-        std::vector<char> found(s.CellCount(), 0);
-        for (int f = 0; f < s.FaceCount(); ++f)
-            if (cells[s.faceCell[f]] && intersecting_[s.sourceFace[f]]) found[s.faceCell[f]] = 1;
-        return found;
+        return CellsWithFacesFlagged(s, cells, intersecting_);
+    }
+
+    /// Per cell of `s`: whether it is flagged in `cells` and has an input face without area
+    /// (DegenerateFaceMask): kept as input faces, such a cell would put that face in the output.
+    std::vector<char> CellsWithDegenerateFaces(const MeshingSurface &s, const std::vector<char> &cells)
+    {
+        return CellsWithFacesFlagged(s, cells, Degenerate());
     }
 
 private:
+    const std::vector<char> &Degenerate()
+    {
+        if (degenerate_.empty()) degenerate_ = DegenerateFaceMask(in_);
+        return degenerate_;
+    }
+
+    static std::vector<char> CellsWithFacesFlagged(const MeshingSurface &s, const std::vector<char> &cells,
+                                                   const std::vector<char> &inputFaceFlag)
+    {
+        std::vector<char> found(s.CellCount(), 0);
+        for (int f = 0; f < s.FaceCount(); ++f)
+            if (cells[s.faceCell[f]] && inputFaceFlag[s.sourceFace[f]]) found[s.faceCell[f]] = 1;
+        return found;
+    }
+
     const IndexedMesh &in_;
     std::vector<char> tested_, intersecting_;  ///< per input face
-    std::vector<char> degenerate_;             ///< per input face, with shape_ and grid_ once needed
+    std::vector<char> degenerate_;             ///< per input face, once needed (see Degenerate)
     std::vector<FaceShape> shape_;
     std::unique_ptr<SurfaceGrid> grid_;
 };
@@ -763,7 +782,8 @@ public:
 
     /// From the best pass, with its anchors (not those of the repair passes after it): cells of
     /// intersecting faces keep their input faces, until none is left; except cells where the
-    /// input itself intersects, which that cannot help. It costs faces: taken only when it leaves
+    /// input itself intersects, which that cannot help, and cells with an input face without
+    /// area, which would make the output degenerate. It costs faces: taken only when it leaves
     /// fewer intersecting pairs within `faceBudget` output faces.
     void KeepInputFaces(double faceBudget)
     {
@@ -777,8 +797,10 @@ public:
         for (int last = round_ + param_.repairRounds; round_ < last && !defects_.intersections.empty(); ++round_) {
             if (cb_) cb_(Progress(), "VSA meshing: keeping input faces against self-intersections");
             const std::vector<char> flagged = CellsOfIntersectingFaces(s_, latest_, defects_);
-            if (KeepInputFacesOfCells(s_, flagged, inputIntersections_.CellsAmong(s_, flagged), requiredAnchors_,
-                                      pinnedAnchors_, inputCells_) == 0)
+            std::vector<char> excluded = inputIntersections_.CellsAmong(s_, flagged);
+            const std::vector<char> degenerate = inputIntersections_.CellsWithDegenerateFaces(s_, flagged);
+            for (int c = 0; c < s_.CellCount(); ++c) excluded[c] |= degenerate[c];
+            if (KeepInputFacesOfCells(s_, flagged, excluded, requiredAnchors_, pinnedAnchors_, inputCells_) == 0)
                 break;
             MeshingPass next = RunPass(&latest_);
             if (double(next.triangles.size()) > faceBudget) break;  // and it only grows
