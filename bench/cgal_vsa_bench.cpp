@@ -229,9 +229,10 @@ int Run(const Options &options)
 
     ApproximationRun run;
     try {
+        namespace approximation = CGAL::Surface_mesh_approximation;
         run = options.metric == "l2"
-                  ? RunApproximation<CGAL::Surface_mesh_approximation::L2_metric_plane_proxy<SurfaceMesh>>(mesh, options)
-                  : RunApproximation<CGAL::Surface_mesh_approximation::L21_metric_plane_proxy<SurfaceMesh>>(mesh, options);
+                  ? RunApproximation<approximation::L2_metric_plane_proxy<SurfaceMesh>>(mesh, options)
+                  : RunApproximation<approximation::L21_metric_plane_proxy<SurfaceMesh>>(mesh, options);
     } catch (const std::exception &e) {
         line.Add("error", std::string("CGAL failed: ") + e.what()).Print();
         return 1;

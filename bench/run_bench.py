@@ -110,7 +110,8 @@ def write_qecd_script(path, target_faces):
     lines = ["<!DOCTYPE FilterScript>", "<FilterScript>",
              ' <filter name="Simplification: Quadric Edge Collapse Decimation">']
     for kind, name, value in QECD_PARAMETERS:
-        lines.append('  <Param type="%s" value="%s" name="%s"/>' % (kind, target_faces if value is None else value, name))
+        shown = target_faces if value is None else value
+        lines.append('  <Param type="%s" value="%s" name="%s"/>' % (kind, shown, name))
     lines += [" </filter>", "</FilterScript>", ""]
     with open(path, "w") as f:
         f.write("\n".join(lines))

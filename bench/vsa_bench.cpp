@@ -139,7 +139,8 @@ int main(int argc, char **argv)
         const ApproximationResult partition = approximation.Result();
         clock.Restart();
         BMesh output;
-        const MeshingReport meshing = BuildApproximatingMesh(approximation.Mesh(), partition.partition, o.meshing, output);
+        const MeshingReport meshing =
+            BuildApproximatingMesh(approximation.Mesh(), partition.partition, o.meshing, output);
         const double tMesh = clock.Seconds();
         // Before the measuring below allocates its own copies and samples.
         const double peakRssMb = vsa_bench::PeakRssMb();

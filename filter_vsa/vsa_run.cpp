@@ -37,7 +37,8 @@ void Describe(const vsa::ShapeApproximationResult &r, const VsaFilterSettings &s
     QStringList &log = outcome.log;
     log << QString("VSA: input: %1").arg(QString::fromStdString(r.input.Summary()));
     for (const std::string &message : p.messages) log << QString("VSA: %1").arg(QString::fromStdString(message));
-    log << QString("VSA: k=%1 proxies, %2 metric, %3 seeding, %4 Lloyd iterations, distortion %5 (%6 of one proxy per component)")
+    log << QString("VSA: k=%1 proxies, %2 metric, %3 seeding, %4 Lloyd iterations, "
+                   "distortion %5 (%6 of one proxy per component)")
                .arg(p.proxyCount)
                .arg(MetricName(settings.core.partition.metric))
                .arg(InitName(settings.core.partition.init))

@@ -32,6 +32,7 @@ xvfb-run -a "$server" -i "$mesh" -s "$script" \
 end=$(date +%s.%N)
 python3 "$root/scripts/summarize_run.py" --log "$log" --mesh "$mesh" --seconds "$start" "$end" --status "$status"
 if [ "$status" -eq 0 ]; then
-  python3 "$root/scripts/polygons_from_ply.py" "$out/${name}_vsa.ply" "$out/${name}_vsa.off" | sed '1s/^/  wrote /; 2,$s/^/  /'
+  python3 "$root/scripts/polygons_from_ply.py" "$out/${name}_vsa.ply" "$out/${name}_vsa.off" \
+    | sed '1s/^/  wrote /; 2,$s/^/  /'
 fi
 exit $status

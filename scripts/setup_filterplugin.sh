@@ -59,11 +59,15 @@ upstream=${deb_version%-*}; upstream=${upstream#*:}
 # download against the checksums of the Sources index (itself checked against the signed Release).
 tarball=$(ls "$modern/download"/meshlab_"$upstream".orig.tar.* 2>/dev/null | head -1 || true)
 if [ -z "$tarball" ] || [ "${VSA_FILTERPLUGIN_OFFLINE:-0}" != 1 ]; then
-  (cd "$modern/download" && apt-get "${apt_private[@]}" source --download-only --tar-only -qq "meshlab=$deb_version" 2>&1 \
+  (cd "$modern/download" \
+     && apt-get "${apt_private[@]}" source --download-only --tar-only -qq "meshlab=$deb_version" 2>&1 \
      | grep -v -e "unsandboxed" -e "^NOTICE:" -e "salsa.debian.org" -e "^Please use:" \
               -e "^git clone" -e "to retrieve the latest" -e "^Skipping already downloaded" -e "^\$" >&2 || true)
   tarball=$(ls "$modern/download"/meshlab_"$upstream".orig.tar.* 2>/dev/null | head -1 || true)
-  [ -n "$tarball" ] || { echo "setup_filterplugin: could not fetch meshlab=$deb_version's tarball from sid" >&2; exit 1; }
+  [ -n "$tarball" ] || {
+    echo "setup_filterplugin: could not fetch meshlab=$deb_version's tarball from sid" >&2
+    exit 1
+  }
 fi
 # Independent re-check against the index apt uses (sha256 of the orig tarball in Checksums-Sha256).
 tar_sha=$(sha256sum "$tarball" | cut -d' ' -f1)

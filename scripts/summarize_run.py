@@ -33,14 +33,16 @@ def main():
     # MeshLab's Hausdorff Distance logs, per direction, the sampled and target layers and then
     # "min : a max b mean : c RMS : d" in absolute terms and over the bounding-box diagonal.
     directions = re.findall(
-        r"Sampled (\d+) pts .*? on (.+?) searched closest on (.+?)\n.*?min : \S+\s+max (\S+)\s+mean : (\S+)\s+RMS : (\S+)"
+        r"Sampled (\d+) pts .*? on (.+?) searched closest on (.+?)\n"
+        r".*?min : \S+\s+max (\S+)\s+mean : (\S+)\s+RMS : (\S+)"
         r".*?Values w\.r\.t\. BBox Diag \((\S+)\)\s*\n\s*min : \S+\s+max (\S+)\s+mean : (\S+)\s+RMS : (\S+)",
         log, re.S)
     # The log is printed whole after every filter: the last two measurements are the two ways.
     directions = directions[-2:]
     for samples, sampled, target, amax, amean, arms, diag, rmax, rmean, rrms in directions:
         print(f"  Hausdorff {sampled} -> {target} ({samples} samples): max {float(amax):.6g} "
-              f"({float(rmax) * 100:.3f}% of the diagonal {float(diag):.6g}), mean {float(amean):.6g}, RMS {float(arms):.6g}")
+              f"({float(rmax) * 100:.3f}% of the diagonal {float(diag):.6g}), "
+              f"mean {float(amean):.6g}, RMS {float(arms):.6g}")
     if len(directions) == 2:
         print(f"  Symmetric Hausdorff distance: {max(float(d[3]) for d in directions):.6g} "
               f"({max(float(d[7]) for d in directions) * 100:.3f}% of the bounding-box diagonal)")

@@ -75,7 +75,8 @@ std::map<std::string, std::string> DefaultVsaParameters()
 {
     return {{"ProxyNum", "50"},         {"TargetError", "0"},     {"Metric", "0"},          {"Init", "1"},
             {"MaxIterations", "50"},    {"RandomSeed", "1"},      {"Teleport", "false"},    {"AnchorThreshold", "0.2"},
-            {"ProjectAnchors", "true"}, {"Polygonal", "true"},    {"ColorizeRegions", "true"}, {"AnchorLayer", "false"}};
+            {"ProjectAnchors", "true"}, {"Polygonal", "true"},
+            {"ColorizeRegions", "true"}, {"AnchorLayer", "false"}};
 }
 
 fs::path WriteVsaScript(const fs::path &dir, const std::map<std::string, std::string> &overrides)
@@ -90,7 +91,8 @@ fs::path WriteVsaScript(const fs::path &dir, const std::map<std::string, std::st
         << "  <Param type=\"RichEnum\" value=\"" << p["Metric"]
         << "\" name=\"Metric\" enum_cardinality=\"2\" enum_val0=\"L2,1\" enum_val1=\"L2\"/>\n"
         << "  <Param type=\"RichEnum\" value=\"" << p["Init"]
-        << "\" name=\"Init\" enum_cardinality=\"3\" enum_val0=\"Random\" enum_val1=\"Farthest\" enum_val2=\"Hierarchical\"/>\n";
+        << "\" name=\"Init\" enum_cardinality=\"3\" enum_val0=\"Random\" enum_val1=\"Farthest\""
+           " enum_val2=\"Hierarchical\"/>\n";
     for (const char *name : {"MaxIterations", "RandomSeed"})
         out << "  <Param type=\"RichInt\" value=\"" << p[name] << "\" name=\"" << name << "\"/>\n";
     out << "  <Param type=\"RichBool\" value=\"" << p["Teleport"] << "\" name=\"Teleport\"/>\n"
@@ -203,7 +205,8 @@ TEST(MeshLabServer, HausdorffScriptMeasuresBothWays)
                                              Quote(kResources + "/scripts/vsa_hausdorff.mlx"));
     ASSERT_EQ(run.exitCode, 0) << run.output;
     // MeshLab logs "min : a max b mean : c RMS : d" twice per run: absolute, then over the diagonal.
-    const std::regex line(R"(Values w\.r\.t\. BBox Diag \(([0-9.eE+-]+)\)\s*\n\s*min : ([0-9.eE+-]+)\s+max ([0-9.eE+-]+))");
+    const std::regex line(R"(Values w\.r\.t\. BBox Diag \(([0-9.eE+-]+)\)\s*\n)"
+                          R"(\s*min : ([0-9.eE+-]+)\s+max ([0-9.eE+-]+))");
     // meshlabserver prints the whole (never cleared) log after each filter: the last two
     // measurements are the two directions.
     std::vector<double> maxima;

@@ -349,7 +349,9 @@ TEST(FilterPlugin, ProxyNumAboveTheFaceCountFailsCleanly)
 {
     const int k = kFandiskFaces + 1;
     ExpectCleanFailure(ApplyVsa(kFandisk, {QString("ProxyNum=%1").arg(k)}),
-                       QString("The number of proxies (%1) exceeds the number of faces (%2)").arg(k).arg(kFandiskFaces));
+                       QString("The number of proxies (%1) exceeds the number of faces (%2)")
+                           .arg(k)
+                           .arg(kFandiskFaces));
 }
 
 TEST(FilterPlugin, NegativeTargetErrorFailsCleanly)

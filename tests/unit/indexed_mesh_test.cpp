@@ -40,7 +40,8 @@ TEST(IndexedMesh, ReportsBorderNonManifoldEdgeAndDegenerateFace)
 {
     // Three triangles around edge 0-1 (a "book"), plus a zero-area triangle far away.
     TMesh m;
-    vsa_test::BuildFromLists(m, {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {5, 5, 5}, {6, 6, 6}, {7, 7, 7}},
+    vsa_test::BuildFromLists(m,
+                             {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {5, 5, 5}, {6, 6, 6}, {7, 7, 7}},
                              {{0, 1, 2}, {1, 0, 3}, {0, 1, 4}, {5, 6, 7}});
     MeshDiagnostics diag;
     const IndexedMesh im = BuildIndexedMesh(m, &diag);
@@ -57,7 +58,8 @@ TEST(IndexedMesh, ReportsNonManifoldVertexAndOrientation)
 {
     // Two triangles touching at vertex 0 only; then a pair whose shared edge runs the same way.
     TMesh bowtie;
-    vsa_test::BuildFromLists(bowtie, {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {-1, 0, 0}, {-1, -1, 0}}, {{0, 1, 2}, {0, 3, 4}});
+    vsa_test::BuildFromLists(bowtie, {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {-1, 0, 0}, {-1, -1, 0}},
+                             {{0, 1, 2}, {0, 3, 4}});
     MeshDiagnostics diag;
     BuildIndexedMesh(bowtie, &diag);
     EXPECT_EQ(diag.nonManifoldVertices, 1);

@@ -71,7 +71,8 @@ void CheckCase(const SweepCase &c, bool print, const MeshingParam &param = Meshi
         std::printf("%-24s k=%-5d init=%d  anchors %5d  faces %5d  flooding %4d  ear %3d  fan %2d  input %2d  cut %2d  "
                     "repair %3d  self-intersections %3d  %.3f s\n",
                     c.mesh.c_str(), c.k, int(c.init), r.anchors, v.faces, r.regionsByFlooding, r.regionsByEarClipping,
-                    r.regionsWithSteinerVertex, r.regionsKeptAsInput, r.regionsCut, r.repairAnchors, v.selfIntersections,
+                    r.regionsWithSteinerVertex, r.regionsKeptAsInput, r.regionsCut, r.repairAnchors,
+                    v.selfIntersections,
                     seconds);
 }
 

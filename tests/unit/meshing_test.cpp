@@ -292,7 +292,8 @@ TEST(Meshing, ChordAcrossAGapIsSplit)
         std::vector<Point3d> samples;  // the output's vertices and face centroids
         for (const auto &t : run.output.faces) {
             for (int v : t) samples.push_back(run.output.positions[v]);
-            samples.push_back((run.output.positions[t[0]] + run.output.positions[t[1]] + run.output.positions[t[2]]) / 3);
+            const auto &P = run.output.positions;
+            samples.push_back((P[t[0]] + P[t[1]] + P[t[2]]) / 3);
         }
         return vsa_test::MaxDistanceToSurface(samples, im);
     };
@@ -712,7 +713,8 @@ TEST(Meshing, RejectsWhatItCannotMeshWithAClearError)
         EXPECT_NE(r.Summary().find(words), std::string::npos);
     };
     TMesh book;  // three faces on one edge
-    vsa_test::BuildFromLists(book, {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}}, {{0, 1, 2}, {1, 0, 3}, {0, 1, 4}});
+    vsa_test::BuildFromLists(book, {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}},
+                             {{0, 1, 2}, {1, 0, 3}, {0, 1, 4}});
     expectError(book, vsa_test::PartitionByRule(BuildIndexedMesh(book), 1, [](int) { return 0; }), "non-manifold");
 
     TMesh flipped;

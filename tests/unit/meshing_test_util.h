@@ -116,8 +116,9 @@ inline double MaxDistanceToSurface(const std::vector<Point3d> &points, const vcg
     double worst = 0;
     for (const Point3d &p : points) {
         double best = std::numeric_limits<double>::infinity();
+        const auto &P = mesh.positions;
         for (const auto &t : mesh.faces)
-            best = std::min(best, PointTriangleDistance(p, mesh.positions[t[0]], mesh.positions[t[1]], mesh.positions[t[2]]));
+            best = std::min(best, PointTriangleDistance(p, P[t[0]], P[t[1]], P[t[2]]));
         worst = std::max(worst, best);
     }
     return worst;
@@ -148,8 +149,9 @@ inline vcg::tri::vsa::IndexedMesh RandomTriangleSoup(int big, int small, unsigne
 inline double SurfaceArea(const vcg::tri::vsa::IndexedMesh &mesh)
 {
     double area = 0;
+    const auto &P = mesh.positions;
     for (const auto &t : mesh.faces)
-        area += 0.5 * ((mesh.positions[t[1]] - mesh.positions[t[0]]) ^ (mesh.positions[t[2]] - mesh.positions[t[0]])).Norm();
+        area += 0.5 * ((P[t[1]] - P[t[0]]) ^ (P[t[2]] - P[t[0]])).Norm();
     return area;
 }
 

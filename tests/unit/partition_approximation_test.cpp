@@ -50,7 +50,8 @@ TEST(PartitionApproximation, CubeGetsOneRegionPerSideFromEverySeedingUnderBothMe
     for (MetricKind metric : {MetricKind::L21, MetricKind::L2})
         for (SeedingMethod init : {SeedingMethod::Farthest, SeedingMethod::Hierarchical, SeedingMethod::Random})
             for (uint64_t seed : {1u, 2u, 3u, 42u, 1234u}) {
-                SCOPED_TRACE(testing::Message() << "metric " << int(metric) << " init " << int(init) << " seed " << seed);
+                SCOPED_TRACE(testing::Message()
+                             << "metric " << int(metric) << " init " << int(init) << " seed " << seed);
                 ApproximationParam p = Params(6, metric, init, seed);
                 // Random seeds can put two proxies on one side and none on another; only
                 // teleporting a proxy gets Lloyd out of that minimum.
@@ -265,7 +266,8 @@ TEST(PartitionApproximation, DegenerateAndNonManifoldInputStillPartitions)
     // A "book" of three triangles on one edge (cut there into three components), and a
     // zero-area triangle: k is raised to 4 components, nothing is NaN.
     TMesh m;
-    vsa_test::BuildFromLists(m, {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {5, 5, 5}, {6, 6, 6}, {7, 7, 7}},
+    vsa_test::BuildFromLists(m,
+                             {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {5, 5, 5}, {6, 6, 6}, {7, 7, 7}},
                              {{0, 1, 2}, {1, 0, 3}, {0, 1, 4}, {5, 6, 7}});
     for (MetricKind metric : {MetricKind::L21, MetricKind::L2}) {
         const ApproximationResult r = Approximate(m, Params(2, metric, SeedingMethod::Farthest, 0));

@@ -101,7 +101,10 @@ TEST(PartitionFlood, QueuePopsByRankFirstInFirstOut)
     for (int step = 0; step < 20000; ++step) {
         if (random.Uniform() < 0.55 || reference.empty()) {
             const double u = random.Uniform();
-            double error = u < 0.1 ? 0.0 : u < 0.3 ? level : u < 0.5 ? level * random.Uniform() : level + random.Uniform();
+            double error = u < 0.1   ? 0.0
+                           : u < 0.3 ? level
+                           : u < 0.5 ? level * random.Uniform()
+                                     : level + random.Uniform();
             if (u > 0.9) error = std::ldexp(random.Uniform(), -int(60 * random.Uniform()));  // tiny, many binades
             const int face = int(random.Uniform() * 50), region = int(random.Uniform() * 5);
             const FloodQueue::Rank rank = queue.RankOf(error);

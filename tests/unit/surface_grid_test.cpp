@@ -26,7 +26,8 @@ void ExpectMatchesBruteForce(const IndexedMesh &im, int queries)
     int near = 0, far = 0;
     for (int q = 0; q < queries; ++q) {
         Point3d p;
-        for (int i = 0; i < 3; ++i) p[i] = box.min[i] - 0.25 * diagonal + unit(random) * (box.Dim()[i] + 0.5 * diagonal);
+        for (int i = 0; i < 3; ++i)
+            p[i] = box.min[i] - 0.25 * diagonal + unit(random) * (box.Dim()[i] + 0.5 * diagonal);
         const double radius = diagonal * std::pow(10.0, -4 + 4.3 * unit(random));
         const double distance = vsa_test::MaxDistanceToSurface({p}, im);
         if (std::abs(distance - radius) < 1e-9 * diagonal) continue;

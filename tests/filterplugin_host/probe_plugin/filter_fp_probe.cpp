@@ -17,7 +17,10 @@ public:
     }
     QString pluginName() const override { return "FilterFpProbe"; }
     QString filterName(ActionIDType) const override { return "Probe Build Settings"; }
-    QString filterInfo(ActionIDType) const override { return "Returns the MeshLab version and scalar it was built with."; }
+    QString filterInfo(ActionIDType) const override
+    {
+        return "Returns the MeshLab version and scalar it was built with.";
+    }
     FilterClass getClass(const QAction *) const override { return FilterPlugin::Other; }
     FilterArity filterArity(const QAction *) const override { return NONE; }
     std::map<std::string, QVariant> applyFilter(const QAction *, const RichParameterList &, MeshDocument &,
