@@ -1,6 +1,7 @@
 #!/usr/bin/env python3
 """Prints a short summary of a meshlabserver run of the VSA filter from its log."""
 import argparse
+import os
 import re
 import sys
 
@@ -31,21 +32,31 @@ def main():
         return 1
 
     # MeshLab's Hausdorff Distance logs, per direction, the sampled and target layers and then
-    # "min : a max b mean : c RMS : d" in absolute terms and over the bounding-box diagonal.
-    directions = re.findall(
-        r"Sampled (\d+) pts .*? on (.+?) searched closest on (.+?)\n"
-        r".*?min : \S+\s+max (\S+)\s+mean : (\S+)\s+RMS : (\S+)"
-        r".*?Values w\.r\.t\. BBox Diag \((\S+)\)\s*\n\s*min : \S+\s+max (\S+)\s+mean : (\S+)\s+RMS : (\S+)",
-        log, re.S)
-    # The log is printed whole after every filter: the last two measurements are the two ways.
-    directions = directions[-2:]
-    for samples, sampled, target, amax, amean, arms, diag, rmax, rmean, rrms in directions:
-        print(f"  Hausdorff {sampled} -> {target} ({samples} samples): max {float(amax):.6g} "
-              f"({float(rmax) * 100:.3f}% of the diagonal {float(diag):.6g}), "
-              f"mean {float(amean):.6g}, RMS {float(arms):.6g}")
-    if len(directions) == 2:
-        print(f"  Symmetric Hausdorff distance: {max(float(d[3]) for d in directions):.6g} "
-              f"({max(float(d[7]) for d in directions) * 100:.3f}% of the bounding-box diagonal)")
+    # "min : a max b mean : c RMS : d" in absolute terms and over the target's bounding-box
+    # diagonal. Each measurement shows up several times (echoed with "LOG: n", then in every
+    # reprint of the log): one per direction, the last of each, in the order they were run.
+    plain = re.sub(r"^LOG: \d+ ?", "", log, flags=re.M)
+    measured = re.findall(
+        r"Sampled (\d+) pts [^\n]*? on ([^\n]+?) searched closest on ([^\n]+?)\n"
+        r"\s*min : \S+\s+max (\S+)\s+mean : (\S+)\s+RMS : (\S+)\s*\n"
+        r"Values w\.r\.t\. BBox Diag \((\S+)\)", plain)
+    directions = {}
+    for samples, sampled, target, amax, amean, arms, diag in measured:
+        directions.pop((sampled, target), None)
+        directions[(sampled, target)] = (samples, float(amax), float(amean), float(arms), float(diag))
+    # Distances over the input's diagonal (that of the direction searching the input), as
+    # vsa-bench reports them, in both directions.
+    input_layer = os.path.basename(args.mesh)
+    input_diag = [d[4] for (_, target), d in directions.items() if target == input_layer]
+    diagonal = input_diag[-1] if input_diag else max((d[4] for d in directions.values()), default=0)
+    for (sampled, target), (samples, amax, amean, arms, _) in directions.items():
+        share = f" ({amax / diagonal * 100:.3f}% of the input's diagonal {diagonal:.6g})" if diagonal > 0 else ""
+        print(f"  Hausdorff {sampled} -> {target} ({samples} samples): max {amax:.6g}{share}, "
+              f"mean {amean:.6g}, RMS {arms:.6g}")
+    if len(directions) == 2 and diagonal > 0:
+        symmetric = max(d[1] for d in directions.values())
+        print(f"  Symmetric Hausdorff distance: {symmetric:.6g} ({symmetric / diagonal * 100:.3f}% of the input's "
+              "bounding-box diagonal)")
     for saved in re.findall(r"Mesh (.*?) saved as (\S+) \((\d+) vn (\d+) fn\)", log):
         print(f"  wrote {saved[1]} ({saved[2]} vertices, {saved[3]} faces)")
     print(f"  meshlabserver wall time: {args.seconds[1] - args.seconds[0]:.2f} s (start-up and Hausdorff included)")
