@@ -677,7 +677,7 @@ public:
         }
         if (!freshFaces.empty() && !grid_) {
             shape_ = ShapesOfFaces(in_, Degenerate());
-            grid_ = std::make_unique<SurfaceGrid>(in_.positions, in_.faces, degenerate_);
+            grid_ = std::make_unique<SurfaceGrid>(in_.positions, in_.faces, Degenerate());
         }
         std::vector<int> metFrom(freshFaces.empty() ? 0 : in_.FaceCount(), -1);
         for (int f : freshFaces) {
