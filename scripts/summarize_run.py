@@ -34,7 +34,7 @@ def main():
     # MeshLab's Hausdorff Distance logs, per direction, the sampled and target layers and then
     # "min : a max b mean : c RMS : d" in absolute terms and over the target's bounding-box
     # diagonal. Each measurement shows up several times (echoed with "LOG: n", then in every
-    # reprint of the log): one per direction, the last of each, in the order they were run.
+    # reprint of the log): one per direction, in the order they were run, with its last figures.
     plain = re.sub(r"^LOG: \d+ ?", "", log, flags=re.M)
     measured = re.findall(
         r"Sampled (\d+) pts [^\n]*? on ([^\n]+?) searched closest on ([^\n]+?)\n"
@@ -42,7 +42,6 @@ def main():
         r"Values w\.r\.t\. BBox Diag \((\S+)\)", plain)
     directions = {}
     for samples, sampled, target, amax, amean, arms, diag in measured:
-        directions.pop((sampled, target), None)
         directions[(sampled, target)] = (samples, float(amax), float(amean), float(arms), float(diag))
     # Distances over the input's diagonal (that of the direction searching the input), as
     # vsa-bench reports them, in both directions.

@@ -72,8 +72,7 @@ void CheckCase(const SweepCase &c, bool print, const MeshingParam &param = Meshi
                     "repair %3d  self-intersections %3d  %.3f s\n",
                     c.mesh.c_str(), c.k, int(c.init), r.anchors, v.faces, r.regionsByFlooding, r.regionsByEarClipping,
                     r.regionsWithSteinerVertex, r.regionsKeptAsInput, r.regionsCut, r.repairAnchors,
-                    v.selfIntersections,
-                    seconds);
+                    v.selfIntersections, seconds);
 }
 
 }  // namespace

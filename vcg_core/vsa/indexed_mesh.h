@@ -117,23 +117,22 @@ inline void BuildOffsets(const std::vector<int> &keyOfItem, int keyCount, std::v
 inline void LinkFaces(IndexedMesh &im, MeshDiagnostics &diag)
 {
     const int faceCount = im.FaceCount();
-    // Half-edges bucketed by their lower vertex (a counting sort, in faceEdge order), each
-    // holding only its upper vertex: on big meshes the cost is memory traffic, not comparisons.
+    // Half-edges bucketed by their lower vertex (BuildOffsets keeps them in faceEdge order),
+    // each holding only its upper vertex: on big meshes the cost is memory traffic, not
+    // comparisons.
+    std::vector<int> lowerVertex(size_t(faceCount) * 3);  // per face edge
+    for (int f = 0; f < faceCount; ++f)
+        for (int i = 0; i < 3; ++i) {
+            const int a = im.faces[f][i], b = im.faces[f][(i + 1) % 3];
+            lowerVertex[3 * f + i] = a == b ? -1 : std::min(a, b);  // -1: joins nothing, left out
+        }
+    std::vector<int> bucketOffset, faceEdges;
+    BuildOffsets(lowerVertex, im.VertexCount(), bucketOffset, faceEdges);
     struct HalfEdge { int upperVertex, faceEdge; };
-    std::vector<int> bucketOffset(size_t(im.VertexCount()) + 1, 0);
-    for (const auto &t : im.faces)
-        for (int i = 0; i < 3; ++i)
-            if (t[i] != t[(i + 1) % 3]) ++bucketOffset[size_t(std::min(t[i], t[(i + 1) % 3])) + 1];
-    std::partial_sum(bucketOffset.begin(), bucketOffset.end(), bucketOffset.begin());
-    std::vector<HalfEdge> edges(size_t(bucketOffset.back()));
-    {
-        std::vector<int> fill(bucketOffset.begin(), bucketOffset.end() - 1);
-        for (int f = 0; f < faceCount; ++f)
-            for (int i = 0; i < 3; ++i) {
-                const int a = im.faces[f][i], b = im.faces[f][(i + 1) % 3];
-                if (a == b) continue;  // an edge of a degenerate face joins nothing
-                edges[fill[std::min(a, b)]++] = {std::max(a, b), 3 * f + i};
-            }
+    std::vector<HalfEdge> edges(faceEdges.size());
+    for (size_t k = 0; k < faceEdges.size(); ++k) {
+        const int e = faceEdges[k];
+        edges[k] = {std::max(im.faces[e / 3][e % 3], im.faces[e / 3][(e % 3 + 1) % 3]), e};
     }
     // Each small bucket sorted by (upper vertex, faceEdge): then the half-edges of one edge
     // are consecutive, in faceEdge order.
