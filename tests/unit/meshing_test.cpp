@@ -899,6 +899,18 @@ AnchorSet FreshAnchors(const MeshingSurface &s, const std::vector<Proxy> &proxie
     return SelectAnchors(s, subdivision, required);
 }
 
+/// Floods every cell of `s` with `flooding`, and expects the colours of a flooding from scratch.
+void ExpectFloodingFromScratch(const MeshingSurface &s, const AnchorSet &anchors, CellFlooding &flooding)
+{
+    for (int c = 0; c < s.CellCount(); ++c) {
+        CellFlooding fresh(s);
+        const std::vector<std::array<int, 3>> expected = fresh.Triples(c, anchors);
+        EXPECT_GT(expected.size(), 0u);
+        EXPECT_EQ(flooding.Triples(c, anchors), expected) << "cell " << c;
+        EXPECT_EQ(flooding.VerticesDeepestFirst(c), fresh.VerticesDeepestFirst(c)) << "cell " << c;
+    }
+}
+
 }  // namespace
 
 // Repair passes update each cell's flooding instead of redoing it; the colours must be those
@@ -915,17 +927,37 @@ TEST(Meshing, UpdatedFloodingEqualsAFreshOne)
         MakeRepairSequence(*m, 150, r);
         const MeshingSurface &s = r.surface;
         CellFlooding updated(s);
-        for (const std::vector<char> &required : r.required) {
-            const AnchorSet anchors = FreshAnchors(s, r.partition.proxies, 0.5, required);
-            for (int c = 0; c < s.CellCount(); ++c) {
-                CellFlooding fresh(s);
-                const std::vector<std::array<int, 3>> expected = fresh.Triples(c, anchors);
-                EXPECT_GT(expected.size(), 0u);
-                EXPECT_EQ(updated.Triples(c, anchors), expected) << "cell " << c;
-                EXPECT_EQ(updated.VerticesDeepestFirst(c), fresh.VerticesDeepestFirst(c)) << "cell " << c;
-            }
-        }
+        for (const std::vector<char> &required : r.required)
+            ExpectFloodingFromScratch(s, FreshAnchors(s, r.partition.proxies, 0.5, required), updated);
     }
+}
+
+// A halving round carries the floodings of the cells it did not halve over to the new surface
+// (renumbered cells, new anchors where the cuts meet their loops): they must still update to
+// the colours of a flooding from scratch, in every cell, halved or not.
+TEST(Meshing, FloodingCarriedOverToHalvedCellsEqualsAFreshOne)
+{
+    TMesh hemisphere;
+    vsa_test::MakeHemisphere(hemisphere, 12, 32);
+    RepairSequence r;
+    MakeRepairSequence(hemisphere, 3, r);
+    const MeshingSurface &s = r.surface;
+    CellFlooding earlier(s);
+    for (const std::vector<char> &required : r.required) {
+        const AnchorSet anchors = FreshAnchors(s, r.partition.proxies, 0.5, required);
+        for (int c = 0; c < s.CellCount(); ++c) earlier.Triples(c, anchors);
+    }
+    MeshingSurface halved = s;
+    std::vector<char> flagged(s.CellCount(), 0);
+    flagged[0] = 1;
+    ASSERT_EQ(HalveCells(halved, flagged), 1);
+    std::string error;
+    ASSERT_TRUE(detail::BuildCellsAndLoops(halved, error)) << error;
+    ASSERT_EQ(halved.CellCount(), s.CellCount() + 1);
+
+    CellFlooding carried(halved, earlier);
+    for (const std::vector<char> &required : {std::vector<char>(), r.required.back()})
+        ExpectFloodingFromScratch(halved, FreshAnchors(halved, r.partition.proxies, 0.5, required), carried);
 }
 
 // Repair passes reuse the chord subdivision of the chains they did not change: the anchors

@@ -741,14 +741,16 @@ public:
 
     /// `proxies`: UsableProxies; `chordDeviationBound`: ChordDeviationBound; `gapTest`: on
     /// `s`'s faces, or nullptr to leave the gap test out (chordGapThreshold 0). All three depend
-    /// on the regions only, not on how they are cut into cells.
+    /// on the regions only, not on how they are cut into cells. `earlier`: the mesher of the
+    /// surface `s` was split from (halved or carved), whose floodings its cells can update, or
+    /// nullptr.
     CellMesher(const MeshingSurface &s, const std::vector<Proxy> &proxies, double chordDeviationBound,
                const MeshingParam &param, ChordGapTest *gapTest, InputIntersections &inputIntersections, int &passes,
-               vcg::CallBackPos *cb)
+               vcg::CallBackPos *cb, const CellMesher *earlier = nullptr)
         : s_(s), proxies_(proxies), param_(param), inputIntersections_(inputIntersections), passes_(passes), cb_(cb),
           subdivision_(s, proxies_, param.chordThreshold, chordDeviationBound, gapTest),
           requiredAnchors_(s.VertexCount(), 0), pinnedAnchors_(s.VertexCount(), 0), inputCells_(s.CellCount(), 0),
-          flooding_(s)
+          flooding_(earlier ? CellFlooding(s, earlier->flooding_) : CellFlooding(s))
     {
     }
     CellMesher(const CellMesher &) = delete;
@@ -902,21 +904,21 @@ MeshingReport BuildApproximatingMesh(const IndexedMesh &in, const Partition &par
     const double chordDeviationBound = detail::ChordDeviationBound(*surface, proxies, param.chordErrorFactor);
     detail::ChordGapTest gapTest(surface->positions, surface->faces, param.chordGapThreshold);
     using Mesher = detail::CellMesher<CoordType>;
-    auto mesherOf = [&](const MeshingSurface &cells, vcg::CallBackPos *progress) {
+    auto mesherOf = [&](const MeshingSurface &cells, vcg::CallBackPos *progress, const Mesher *earlier) {
         return std::make_unique<Mesher>(cells, proxies, chordDeviationBound, param,
                                          param.chordGapThreshold > 0 ? &gapTest : nullptr, inputIntersections,
-                                         report.passes, progress);
+                                         report.passes, progress, earlier);
     };
     std::shared_ptr<MeshingSurface> bestSurface = surface;
-    std::unique_ptr<Mesher> best = mesherOf(*surface, cb);
+    std::unique_ptr<Mesher> best = mesherOf(*surface, cb, nullptr);
     best->Repair();
-    // A surface whose pieces were split (halved or carved), with its cells rebuilt and meshed
-    // with repairs (progress: one step per round); nullptr if its cells do not trace, which cells
-    // grown as discs always do: the best output so far stays then.
-    auto meshSplit = [&](MeshingSurface &split) -> std::unique_ptr<Mesher> {
+    // A surface split (halved or carved) from the one `earlier` meshed, with its cells rebuilt
+    // and meshed with repairs (progress: one step per round); nullptr if its cells do not
+    // trace, which cells grown as discs always do: the best output so far stays then.
+    auto meshSplit = [&](MeshingSurface &split, const Mesher &earlier) -> std::unique_ptr<Mesher> {
         std::string internalError;
         if (!detail::BuildCellsAndLoops(split, internalError)) return nullptr;
-        std::unique_ptr<Mesher> mesher = mesherOf(split, nullptr);
+        std::unique_ptr<Mesher> mesher = mesherOf(split, nullptr, &earlier);
         mesher->Repair();
         return mesher;
     };
@@ -926,6 +928,7 @@ MeshingReport BuildApproximatingMesh(const IndexedMesh &in, const Partition &par
     // leaves some: halves stay polygons of the regions, input faces do not.
     if (param.halvingRounds > 0 && !best->Best().defects.intersections.empty()) {
         std::shared_ptr<MeshingSurface> latest = surface;
+        std::unique_ptr<Mesher> latestAttempt;  // the mesher of `latest`, unless it is the best
         std::vector<char> flagged = detail::CellsOfIntersectingFaces(*latest, best->Best().pass, best->Best().defects);
         int halvedSoFar = 0;
         bool inputIntersectsThere = false;  // at a cell of an intersecting face, in some round
@@ -938,17 +941,21 @@ MeshingReport BuildApproximatingMesh(const IndexedMesh &in, const Partition &par
             }
             auto halved = std::make_shared<MeshingSurface>(*latest);
             const int cellsHalved = HalveCells(*halved, flagged);
-            std::unique_ptr<Mesher> attempt = cellsHalved > 0 ? meshSplit(*halved) : nullptr;
+            std::unique_ptr<Mesher> attempt =
+                cellsHalved > 0 ? meshSplit(*halved, latestAttempt ? *latestAttempt : *best) : nullptr;
             if (!attempt) break;
             halvedSoFar += cellsHalved;
             const detail::PassDefects &defects = attempt->Best().defects;
             flagged = detail::CellsOfIntersectingFaces(*halved, attempt->Best().pass, defects);
+            latestAttempt.reset();  // before its surface goes
             latest = halved;
             if (defects.intersections.size() < best->Best().defects.intersections.size()) {
                 best = std::move(attempt);
                 bestSurface = halved;
                 report.halvingRounds = round;
                 report.cellsHalved = halvedSoFar;
+            } else {
+                latestAttempt = std::move(attempt);
             }
             if (best->Best().defects.intersections.empty() ||
                 (inputIntersectsThere && round - report.halvingRounds >= detail::kHalvingPatience))
@@ -977,8 +984,8 @@ MeshingReport BuildApproximatingMesh(const IndexedMesh &in, const Partition &par
             for (char intersects : intersectingInput) inputIntersectsThere |= intersects;
             auto carved = std::make_shared<MeshingSurface>(*latest);
             const int pieces = CarveCells(*carved, detail::CarvingSeeds(*latest, pass, defects, intersectingInput));
+            std::unique_ptr<Mesher> attempt = pieces > 0 ? meshSplit(*carved, latestMesher) : nullptr;
             latestAttempt.reset();  // done with its pass, before its surface goes
-            std::unique_ptr<Mesher> attempt = pieces > 0 ? meshSplit(*carved) : nullptr;
             if (!attempt) break;
             carvedSoFar += pieces;
             attempt->KeepInputFaces(faceBudget);

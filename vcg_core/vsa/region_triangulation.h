@@ -16,6 +16,7 @@
 #include <cstdint>
 #include <functional>
 #include <limits>
+#include <memory>
 #include <numeric>
 #include <set>
 #include <tuple>
@@ -153,6 +154,7 @@ public:
     /// measures an edge twice.
     explicit CellFlooding(const MeshingSurface &s)
         : s_(s),
+          edges_(std::make_shared<const Edges>(s)),
           color_(s.positions.size(), -1),
           distance_(s.positions.size(), 0),
           parent_(s.positions.size(), -1),
@@ -161,31 +163,37 @@ public:
           loopColor_(s.CellCount()),
           loopDistance_(s.CellCount())
     {
-        const int vertexCount = s.VertexCount();
-        // Each edge once: from the higher of its two faces, or from its only one.
-        std::vector<std::array<int, 2>> edges;
-        for (int f = 0; f < s.FaceCount(); ++f)
-            for (int i = 0; i < 3; ++i)
-                if (s.neighbors[f][i] < f) edges.push_back({s.faces[f][i], s.faces[f][(i + 1) % 3]});
-        edgeOffset_.assign(size_t(vertexCount) + 1, 0);
-        for (const auto &[u, w] : edges) ++edgeOffset_[u + 1], ++edgeOffset_[w + 1];
-        std::partial_sum(edgeOffset_.begin(), edgeOffset_.end(), edgeOffset_.begin());
-        std::vector<int> fill(edgeOffset_.begin(), edgeOffset_.end() - 1);
-        edgeTo_.resize(2 * edges.size());
-        edgeLength_.resize(2 * edges.size());
-        for (const auto &[u, w] : edges) {
-            const double length = (s.positions[w] - s.positions[u]).Norm();
-            edgeTo_[fill[u]] = w, edgeLength_[fill[u]++] = length;
-            edgeTo_[fill[w]] = u, edgeLength_[fill[w]++] = length;
+        FindInteriors();
+    }
+
+    /// For `s` cut into other cells than the surface of `earlier` (halved or carved, see
+    /// HalveCells: the same vertices and faces): shares its edges, and every cell of `s` that
+    /// was a cell there, with the same loop, keeps its flooding to update, as a later pass on
+    /// the same cells would. Halving rounds leave most cells as they were, and flooding them
+    /// anew would cost each round as much as the first pass.
+    CellFlooding(const MeshingSurface &s, const CellFlooding &earlier)
+        : s_(s),
+          edges_(earlier.edges_),
+          color_(earlier.color_),
+          distance_(earlier.distance_),
+          parent_(earlier.parent_),
+          root_(earlier.root_),
+          changed_(earlier.changed_),
+          loopColor_(s.CellCount()),
+          loopDistance_(s.CellCount())
+    {
+        FindInteriors();
+        const MeshingSurface &before = earlier.s_;
+        for (int c = 0; c < s.CellCount(); ++c) {
+            const int first = s.cellFaceOffset[c], last = s.cellFaceOffset[c + 1];
+            const int was = before.faceCell[s.cellFaces[first]];
+            bool same = before.cellFaceOffset[was + 1] - before.cellFaceOffset[was] == last - first &&
+                        before.cellLoop[was] == s.cellLoop[c];
+            for (int k = first; k < last && same; ++k) same = before.faceCell[s.cellFaces[k]] == was;
+            if (!same) continue;
+            loopColor_[c] = earlier.loopColor_[was];
+            loopDistance_[c] = earlier.loopDistance_[was];
         }
-        // A vertex off its cell's loop has all its faces in that cell: the cell is a disc.
-        interiorOf_.assign(vertexCount, -1);
-        for (int v = 0; v < vertexCount; ++v)
-            for (int k = s.vertexFaceOffset[v]; k < s.vertexFaceOffset[v + 1]; ++k)
-                interiorOf_[v] = s.faceCell[s.vertexFaces[k]];
-        for (const std::vector<int> &loop : s.cellLoop)
-            for (int v : loop) interiorOf_[v] = -1;
-        detail::BuildOffsets(interiorOf_, s.CellCount(), interiorOffset_, interior_);
     }
 
     /// Anchor triples of the three-coloured faces of cell c, each sorted, in increasing order
@@ -225,10 +233,36 @@ public:
 private:
     using QueueItem = std::pair<double, int>;  ///< distance, vertex
 
+    /// The edges around every vertex, each with its length: the same whatever the cells.
+    struct Edges
+    {
+        std::vector<int> offset;  ///< edges from vertex u: to[offset[u] .. u+1)
+        std::vector<int> to;      ///< the other end of each edge
+        std::vector<double> length;
+
+        explicit Edges(const MeshingSurface &s)
+        {
+            // Each edge once: from the higher of its two faces, or from its only one.
+            std::vector<std::array<int, 2>> edges;
+            for (int f = 0; f < s.FaceCount(); ++f)
+                for (int i = 0; i < 3; ++i)
+                    if (s.neighbors[f][i] < f) edges.push_back({s.faces[f][i], s.faces[f][(i + 1) % 3]});
+            offset.assign(size_t(s.VertexCount()) + 1, 0);
+            for (const auto &[u, w] : edges) ++offset[u + 1], ++offset[w + 1];
+            std::partial_sum(offset.begin(), offset.end(), offset.begin());
+            std::vector<int> fill(offset.begin(), offset.end() - 1);
+            to.resize(2 * edges.size());
+            length.resize(2 * edges.size());
+            for (const auto &[u, w] : edges) {
+                const double edgeLength = (s.positions[w] - s.positions[u]).Norm();
+                to[fill[u]] = w, length[fill[u]++] = edgeLength;
+                to[fill[w]] = u, length[fill[w]++] = edgeLength;
+            }
+        }
+    };
+
     const MeshingSurface &s_;
-    std::vector<int> edgeOffset_;  ///< edges from vertex u: edgeTo_[edgeOffset_[u] .. u+1)
-    std::vector<int> edgeTo_;      ///< the other end of each edge
-    std::vector<double> edgeLength_;
+    std::shared_ptr<const Edges> edges_;
     std::vector<int> interiorOf_;  ///< per vertex: the cell it is inside of, -1 on a loop
     std::vector<int> interiorOffset_, interior_;  ///< cell c's interior: interior_[interiorOffset_[c] .. c+1)
     std::vector<QueueItem> queue_;  ///< a min-heap, kept to reuse its storage
@@ -241,6 +275,18 @@ private:
     std::vector<char> changed_;  ///< loop vertex: changed since its cell's last flooding
     std::vector<std::vector<int>> loopColor_;        ///< per cell and loop position, at its last flooding
     std::vector<std::vector<double>> loopDistance_;  ///< (empty: not flooded yet)
+
+    /// A vertex off its cell's loop has all its faces in that cell: the cell is a disc.
+    void FindInteriors()
+    {
+        interiorOf_.assign(s_.VertexCount(), -1);
+        for (int v = 0; v < s_.VertexCount(); ++v)
+            for (int k = s_.vertexFaceOffset[v]; k < s_.vertexFaceOffset[v + 1]; ++k)
+                interiorOf_[v] = s_.faceCell[s_.vertexFaces[k]];
+        for (const std::vector<int> &loop : s_.cellLoop)
+            for (int v : loop) interiorOf_[v] = -1;
+        detail::BuildOffsets(interiorOf_, s_.CellCount(), interiorOffset_, interior_);
+    }
 
     void ColorLoop(int c, const AnchorSet &anchors)
     {
@@ -299,11 +345,12 @@ private:
             const int v = interior_[k];
             if (fresh || color_[v] < 0 || changed_[root_[v]]) color_[v] = -1, parent_[v] = -1;
         }
+        const Edges &edges = *edges_;
         for (int k = first; k < last; ++k) {
             const int v = interior_[k];
             if (color_[v] >= 0) continue;
-            for (int e = edgeOffset_[v]; e < edgeOffset_[v + 1]; ++e) {
-                const int u = edgeTo_[e];
+            for (int e = edges.offset[v]; e < edges.offset[v + 1]; ++e) {
+                const int u = edges.to[e];
                 if (color_[u] >= 0 && (interiorOf_[u] == c || !changed_[u])) Push(u);
             }
         }
@@ -316,10 +363,10 @@ private:
             queue_.pop_back();
             if (d != distance_[u] || color_[u] < 0) continue;  // stale entry, or a loop without anchors
             const int uRoot = interiorOf_[u] == c ? root_[u] : u;
-            for (int e = edgeOffset_[u]; e < edgeOffset_[u + 1]; ++e) {
-                const int w = edgeTo_[e];
+            for (int e = edges.offset[u]; e < edges.offset[u + 1]; ++e) {
+                const int w = edges.to[e];
                 if (interiorOf_[w] != c) continue;
-                const double nd = d + edgeLength_[e];
+                const double nd = d + edges.length[e];
                 if (color_[w] >= 0) {
                     if (nd > distance_[w]) continue;
                     if (nd == distance_[w]) {
