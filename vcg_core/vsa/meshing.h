@@ -510,9 +510,10 @@ inline std::pair<int, double> ChainSplit(const MeshingSurface &s, const MeshingP
 /// Changes what the next pass does about this pass's defects. The usual causes are a chord
 /// that strays from its chain and an anchor moved by projection. Crossing polygon edges get
 /// an anchor each, at their chain's farthest vertex. On each face of an intersecting pair,
-/// the chord-edge whose chain strays farthest relative to its length (or the cell's worst
-/// chain, when none of the face's chords has vertices to spare) gets one too, and the face's
-/// anchors are pinned to their input vertices. Returns how many anchors were added or pinned.
+/// the chord-edge whose chain strays farthest relative to its length (or the first chain of
+/// the cell's polygon with a vertex to spare, when none of the face's chords has one) gets one
+/// too, and the face's anchors are pinned to their input vertices. Returns how many anchors
+/// were added or pinned.
 inline int RespondToDefects(const MeshingSurface &s, const MeshingPass &pass, const PassDefects &defects,
                             std::vector<char> &requiredAnchors, std::vector<char> &pinnedAnchors)
 {
@@ -534,20 +535,34 @@ inline int RespondToDefects(const MeshingSurface &s, const MeshingPass &pass, co
     for (const auto &[f, g] : defects.intersections) offending.push_back(f), offending.push_back(g);
     std::sort(offending.begin(), offending.end());
     offending.erase(std::unique(offending.begin(), offending.end()), offending.end());
+    // Per output vertex, its position in the polygon of the cell at hand, and that cell's first
+    // chain with a vertex to spare, once needed: a coarse partition of a detailed shape has long
+    // polygons with many offending faces each (a cell's faces come one after the other here).
+    std::vector<int> polygonPosition(pass.positions.size(), -1);
+    int cellAtHand = -1;
+    std::pair<int, double> firstSplittable;
     for (int f : offending) {
         const int c = pass.triangleCell[f];
         const std::vector<int> &polygon = pass.polygons[c];
         const int n = int(polygon.size());
+        if (c != cellAtHand) {
+            if (cellAtHand >= 0)
+                for (int a : pass.polygons[cellAtHand]) polygonPosition[a] = -1;
+            for (int k = 0; k < n; ++k) polygonPosition[polygon[k]] = k;
+            cellAtHand = c;
+            firstSplittable = {-1, -1.0};
+        }
         std::pair<int, double> best(-1, -1.0);
-        for (int i = 0; i < 3; ++i)
-            for (int k = 0; k < n; ++k)
-                if (polygon[k] == pass.triangles[f][i] && polygon[(k + 1) % n] == pass.triangles[f][(i + 1) % 3]) {
-                    const std::pair<int, double> split = ChainSplit(s, pass, c, k);
-                    if (split.second > best.second) best = split;
-                }
-        for (int k = 0; k < n && best.first < 0; ++k) {
-            const std::pair<int, double> split = ChainSplit(s, pass, c, k);
-            if (split.second > best.second) best = split;
+        for (int i = 0; i < 3; ++i) {
+            const int k = polygonPosition[pass.triangles[f][i]];
+            if (k >= 0 && polygon[(k + 1) % n] == pass.triangles[f][(i + 1) % 3]) {
+                const std::pair<int, double> split = ChainSplit(s, pass, c, k);
+                if (split.second > best.second) best = split;
+            }
+        }
+        if (best.first < 0) {
+            for (int k = 0; k < n && firstSplittable.first < 0; ++k) firstSplittable = ChainSplit(s, pass, c, k);
+            best = firstSplittable;
         }
         if (best.first >= 0) require(c, best.first);
         for (int a : pass.triangles[f]) {
