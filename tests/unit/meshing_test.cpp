@@ -891,6 +891,14 @@ void MakeRepairSequence(const TMesh &m, int steps, RepairSequence &r)
     }
 }
 
+/// MakeRepairSequence on a hemisphere of 12 rings and 32 sectors.
+void MakeHemisphereRepairSequence(int steps, RepairSequence &r)
+{
+    TMesh hemisphere;
+    vsa_test::MakeHemisphere(hemisphere, 12, 32);
+    MakeRepairSequence(hemisphere, steps, r);
+}
+
 /// Anchors by a chord subdivision made for this call alone.
 AnchorSet FreshAnchors(const MeshingSurface &s, const std::vector<Proxy> &proxies, double chordThreshold,
                        const std::vector<char> &required = {})
@@ -937,10 +945,8 @@ TEST(Meshing, UpdatedFloodingEqualsAFreshOne)
 // the colours of a flooding from scratch, in every cell, halved or not.
 TEST(Meshing, FloodingCarriedOverToHalvedCellsEqualsAFreshOne)
 {
-    TMesh hemisphere;
-    vsa_test::MakeHemisphere(hemisphere, 12, 32);
     RepairSequence r;
-    MakeRepairSequence(hemisphere, 3, r);
+    MakeHemisphereRepairSequence(3, r);
     const MeshingSurface &s = r.surface;
     CellFlooding earlier(s);
     for (const std::vector<char> &required : r.required) {
@@ -964,10 +970,8 @@ TEST(Meshing, FloodingCarriedOverToHalvedCellsEqualsAFreshOne)
 // must be those of a subdivision from scratch.
 TEST(Meshing, RememberedChordSubdivisionEqualsAFreshOne)
 {
-    TMesh hemisphere;
-    vsa_test::MakeHemisphere(hemisphere, 12, 32);
     RepairSequence r;
-    MakeRepairSequence(hemisphere, 20, r);
+    MakeHemisphereRepairSequence(20, r);
     const MeshingSurface &s = r.surface;
     detail::ChainSubdivision remembered(s, r.partition.proxies, 0.2);
     const AnchorSet coarse = FreshAnchors(s, r.partition.proxies, 0.2);

@@ -178,7 +178,7 @@ public:
           distance_(earlier.distance_),
           parent_(earlier.parent_),
           root_(earlier.root_),
-          changed_(earlier.changed_),
+          changed_(s.positions.size(), 0),
           loopColor_(s.CellCount()),
           loopDistance_(s.CellCount())
     {
