@@ -75,26 +75,6 @@ void CheckCase(const SweepCase &c, bool print, const MeshingParam &param = Meshi
                     v.selfIntersections, seconds);
 }
 
-/// Counts the meshing's progress calls that carry one message. The callback is a plain function
-/// pointer, hence the static state: Counting(message) starts a count and returns the callback.
-const std::string kHalvingMessage = "VSA meshing: halving cells";
-const std::string kRepairMessage = "VSA meshing: repairing folds and self-intersections";
-
-struct ProgressCounter
-{
-    static inline std::string message;
-    static inline int calls = 0;
-    static vcg::CallBackPos *Counting(const std::string &m)
-    {
-        message = m;
-        calls = 0;
-        return [](const int, const char *text) {
-            calls += message == text;
-            return true;
-        };
-    }
-};
-
 }  // namespace
 
 TEST(MeshingRealMeshes, ClosedAndOpenMeshesStayValid)
@@ -299,74 +279,22 @@ TEST(MeshingRealMeshes, HalvingGivesUpEarlyOnlyWhereTheInputIntersectsItself)
     // kHalvingPatience; giving up early leaves 48 pairs here): halving must go on until none is
     // left. "man" intersects itself (848 pairs) near the pairs its output keeps at k=20: after
     // detail::kHalvingPatience rounds without fewer pairs, halving stops.
+    static int halvingCalls = 0;
+    vcg::CallBackPos *count = [](const int, const char *message) {
+        halvingCalls += std::string(message) == "VSA meshing: halving cells";
+        return true;
+    };
     MeshingReport clean, intersecting;
-    CheckCase({"dino.off", 20, SeedingMethod::Farthest}, false, MeshingParam(), &clean,
-              ProgressCounter::Counting(kHalvingMessage));
+    halvingCalls = 0;
+    CheckCase({"dino.off", 20, SeedingMethod::Farthest}, false, MeshingParam(), &clean, count);
     EXPECT_EQ(clean.validity.selfIntersections, 0);
     EXPECT_GE(clean.halvingRounds, 3);
-    EXPECT_EQ(ProgressCounter::calls, clean.halvingRounds);
-    CheckCase({"man.off", 20, SeedingMethod::Random}, false, MeshingParam(), &intersecting,
-              ProgressCounter::Counting(kHalvingMessage));
+    EXPECT_EQ(halvingCalls, clean.halvingRounds);
+    halvingCalls = 0;
+    CheckCase({"man.off", 20, SeedingMethod::Random}, false, MeshingParam(), &intersecting, count);
     EXPECT_GT(intersecting.validity.selfIntersections, 0);
     EXPECT_LT(intersecting.halvingRounds + detail::kHalvingPatience, MeshingParam().halvingRounds);
-    EXPECT_EQ(ProgressCounter::calls, intersecting.halvingRounds + detail::kHalvingPatience);
-}
-
-TEST(MeshingRealMeshes, RepairStallingWithPairsLeftGivesWayToHalving)
-{
-    // The first surface's repair rounds are counted by their progress calls. Turbine at k=20
-    // keeps pairs through a long repair; without halving to follow, the repair goes on (its
-    // output, with keeping input faces off, is its best pass), with halving it stops
-    // kRepairPatienceBeforeHalving rounds after its best pass.
-    const SweepCase c{"turbine.off", 20, SeedingMethod::Farthest};
-    MeshingParam alone;
-    alone.halvingRounds = 0;
-    alone.maxInputFacesGrowth = 0;
-    MeshingReport repairedOnly, halved;
-    CheckCase(c, false, alone, &repairedOnly, ProgressCounter::Counting(kRepairMessage));
-    EXPECT_GT(repairedOnly.validity.selfIntersections, 0);
-    EXPECT_GT(ProgressCounter::calls, repairedOnly.repairRounds + detail::kRepairPatienceBeforeHalving);
-    CheckCase(c, false, MeshingParam(), &halved, ProgressCounter::Counting(kRepairMessage));
-    EXPECT_EQ(ProgressCounter::calls, repairedOnly.repairRounds + detail::kRepairPatienceBeforeHalving);
-    EXPECT_EQ(halved.validity.selfIntersections, 0);
-    EXPECT_GT(halved.halvingRounds, 0);
-}
-
-TEST(MeshingRealMeshes, RepairGoesOnWhenHalvingHasNothingToHalve)
-{
-    // Elk at k=100 under L2: the repair's best pass comes after two fruitless rounds, with
-    // pairs left; it gives way to halving, which finds no cell to halve (one halving progress
-    // call, no round taken). The repair must then go on as if halving were off: same passes,
-    // same output, no intersection.
-    const SweepCase c{"elk.off", 100, SeedingMethod::Farthest};
-    ApproximationParam l2;
-    l2.metric = MetricKind::L2;
-    l2.randomSeed = 1;
-    MeshingParam noHalving;
-    noHalving.halvingRounds = 0;
-    MeshingReport repaired, halvingTried;
-    CheckCase(c, false, noHalving, &repaired, nullptr, l2);
-    EXPECT_GT(repaired.repairRounds, detail::kRepairPatienceBeforeHalving);
-    CheckCase(c, false, MeshingParam(), &halvingTried, ProgressCounter::Counting(kHalvingMessage), l2);
-    EXPECT_EQ(ProgressCounter::calls, 1);
-    EXPECT_EQ(halvingTried.halvingRounds, 0);
-    EXPECT_EQ(halvingTried.passes, repaired.passes);
-    EXPECT_EQ(halvingTried.validity.faces, repaired.validity.faces);
-    EXPECT_EQ(halvingTried.validity.selfIntersections, 0);
-}
-
-TEST(MeshingRealMeshes, RepairOfFoldsAloneKeepsItsPatience)
-{
-    // "eight" at k=100: the first pass has folds but no intersecting pair; the next two passes
-    // have pairs, the third neither. Halving does not look for folds, so the repair may not
-    // give way to it there.
-    MeshingReport r;
-    CheckCase({"eight.off", 100, SeedingMethod::Farthest}, false, MeshingParam(), &r,
-              ProgressCounter::Counting(kRepairMessage));
-    EXPECT_GT(r.repairRounds, detail::kRepairPatienceBeforeHalving);
-    EXPECT_EQ(ProgressCounter::calls, r.repairRounds);
-    EXPECT_EQ(r.validity.selfIntersections, 0);
-    EXPECT_EQ(r.halvingRounds, 0);
+    EXPECT_EQ(halvingCalls, intersecting.halvingRounds + detail::kHalvingPatience);
 }
 
 TEST(MeshingRealMeshes, InputFacesStartFromTheAnchorsOfTheBestPass)
@@ -450,13 +378,9 @@ TEST(MeshingRealMeshes, TheOutputPassIsTheOneWithFewestIntersections)
     // Boeing at k=50: an early pass has the fewest defects in all (hundreds of intersecting
     // pairs, fewer polygon crossings), the last pass the fewest intersections (none; its 556
     // crossings the triangulation avoids). The output must be the last pass: no intersection.
-    // Halving off: with it, this repair gives way to halving after its early best (see
-    // kRepairPatienceBeforeHalving).
     const SweepCase c{"boeing.off", 50, SeedingMethod::Hierarchical};
-    MeshingParam repairOnly;
-    repairOnly.halvingRounds = 0;
     MeshingReport r;
-    CheckCase(c, false, repairOnly, &r);
+    CheckCase(c, false, MeshingParam(), &r);
     EXPECT_EQ(r.validity.selfIntersections, 0);
     EXPECT_EQ(r.repairRounds, r.passes - 1);
     EXPECT_GT(r.passes, 10);

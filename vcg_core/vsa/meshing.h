@@ -22,7 +22,6 @@
 #include <string>
 #include <type_traits>
 #include <unordered_map>
-#include <utility>
 #include <vector>
 
 namespace vcg {
@@ -161,23 +160,17 @@ namespace detail {
 /// 221, 383, ...). Replayed on the per-round defect counts of 163 runs (CGAL's sample meshes
 /// at k=50 with three seedings, and the 60-case sweep), these values never lost a better
 /// output (ranked by total defects, or by intersections first) and ran 10% fewer passes;
-/// 4 rounds, or 1.5 times, lost one.
+/// 4 rounds, or 1.5 times, lost one. Giving up sooner whatever the divergence, and halving
+/// instead, runs a third fewer passes on CGAL's sample meshes (3 seedings, k = 20 and 100) but
+/// loses outputs. After 2 fruitless rounds: boeing's repair, which climbs from 384 pairs to 774
+/// before reaching 0 at round 11, is halved instead (Hausdorff 1.4 times higher), and "eight"
+/// at k=100 stays folded (3.4 times farther from its input). After 3 rounds, or 2 on halved
+/// surfaces only, diplodocus at k=20 keeps 16 (2) pairs where it had none. After 2 rounds only
+/// while pairs remain and halving follows, resuming the repair if halving does no better
+/// (39% and 30% fewer passes at k = 20 and 100), lion-head at k=20 under L2 (hierarchical)
+/// keeps 5 pairs where it had none: halving from a repair cut short ends elsewhere.
 constexpr int kRepairPatience = 5;
 constexpr size_t kRepairDivergence = 2;
-
-/// When halving comes next and the best pass still has intersecting pairs, the repair gives up
-/// after this many rounds in a row without a better pass, diverging or not: halving mends such
-/// pairs in fewer passes than a wandering repair (turbine at k=20, farthest: from 625 pairs a
-/// repair reached 321 at round 2, then 416, 727, 386, ..., 735 at round 12, and 4 of the 5
-/// halving rounds after it ran all 12 too). On CGAL's sample meshes (three seedings,
-/// k = 20 and 100: 828 runs) this ran 39% and 30% fewer passes; every clean input still ends
-/// without pairs; the 69 outputs it changed have, on average, as many faces and as high a
-/// Hausdorff distance (geometric means 0.98 and 1.01 times), from 0.55 to 1.7 times (boeing's
-/// repair, cut short at 384 pairs, would have climbed to 774 and then down to 0). Folds alone
-/// keep the full patience, as halving does not look for them ("eight" at k=100 unfolds at
-/// round 3, and stays 3.4 times farther from its input if cut short); 3 rounds whatever the
-/// defects left diplodocus at k=20 (random) with 16 pairs where it had none.
-constexpr int kRepairPatienceBeforeHalving = 2;
 
 /// Halving rounds give up after this many rounds in a row without fewer intersecting pairs, once
 /// a cell of an intersecting face has been found where the input intersects itself: what
@@ -789,9 +782,8 @@ public:
     const Attempt &Best() const { return best_; }
 
     /// The first pass, then repair passes while defects remain (see RespondToDefects), until
-    /// repairRounds or the repair diverges (see kRepairPatience), or stalls when
-    /// `halvingFollows` (see kRepairPatienceBeforeHalving; FinishRepair goes on from there).
-    void Repair(bool halvingFollows)
+    /// repairRounds or the repair diverges (see kRepairPatience).
+    void Repair()
     {
         if (cb_) cb_(20, "VSA meshing: anchors and triangulation");
         best_.pass = RunPass(nullptr);
@@ -799,19 +791,18 @@ public:
         best_.requiredAnchors = requiredAnchors_;
         best_.pinnedAnchors = pinnedAnchors_;
         defects_ = best_.defects;
-        RepairRounds(halvingFollows);
-    }
-
-    /// The repair that Repair cut short for halving, if it did, goes on as if it had not: for
-    /// when halving gave no better output (or had nothing to halve). Without progress calls:
-    /// halving has gone past the repair's share of the progress.
-    void FinishRepair()
-    {
-        if (!cutShort_) return;
-        cutShort_ = false;
-        vcg::CallBackPos *const cb = std::exchange(cb_, nullptr);
-        RepairRounds(false);
-        cb_ = cb;
+        for (; round_ <= param_.repairRounds && defects_.Count() > 0; ++round_) {
+            if (round_ - 1 - best_.repairRound >= kRepairPatience &&
+                defects_.Count() >= kRepairDivergence * best_.defects.Count())
+                break;
+            if (cb_) cb_(Progress(), "VSA meshing: repairing folds and self-intersections");
+            const MeshingPass &previous = round_ == 1 ? best_.pass : latest_;  // latest_: none yet
+            if (RespondToDefects(s_, previous, defects_, requiredAnchors_, pinnedAnchors_) == 0) break;
+            MeshingPass next = RunPass(&previous);
+            defects_ = FindDefects(next, &previous, &defects_);
+            latest_ = std::move(next);
+            if (defects_.BetterThan(best_.defects)) KeepLatest(round_);
+        }
     }
 
     /// From the best pass, with its anchors (not those of the repair passes after it): cells of
@@ -861,29 +852,8 @@ private:
     MeshingPass latest_;   ///< the last pass run
     PassDefects defects_;  ///< those of latest_ (of the first pass, before any repair)
     int round_ = 1;        ///< the next round
-    bool cutShort_ = false;  ///< Repair gave way to halving (see FinishRepair)
 
     int Progress() const { return 20 + 50 * round_ / (2 * param_.repairRounds + 1); }
-
-    /// Repair rounds from round_ on, each responding to latest_'s defects_ (see Repair).
-    void RepairRounds(bool halvingFollows)
-    {
-        for (; round_ <= param_.repairRounds && defects_.Count() > 0; ++round_) {
-            const int fruitless = round_ - 1 - best_.repairRound;
-            if (fruitless >= kRepairPatience && defects_.Count() >= kRepairDivergence * best_.defects.Count()) break;
-            if (halvingFollows && !best_.defects.intersections.empty() && fruitless >= kRepairPatienceBeforeHalving) {
-                cutShort_ = true;
-                break;
-            }
-            if (cb_) cb_(Progress(), "VSA meshing: repairing folds and self-intersections");
-            const MeshingPass &previous = round_ == 1 ? best_.pass : latest_;  // latest_: none yet
-            if (RespondToDefects(s_, previous, defects_, requiredAnchors_, pinnedAnchors_) == 0) break;
-            MeshingPass next = RunPass(&previous);
-            defects_ = FindDefects(next, &previous, &defects_);
-            latest_ = std::move(next);
-            if (defects_.BetterThan(best_.defects)) KeepLatest(round_);
-        }
-    }
 
     /// The last pass becomes the best, from repair round `round`.
     void KeepLatest(int round)
@@ -964,16 +934,15 @@ MeshingReport BuildApproximatingMesh(const IndexedMesh &in, const Partition &par
     };
     std::shared_ptr<MeshingSurface> bestSurface = surface;
     std::unique_ptr<Mesher> best = mesherOf(*surface, cb, nullptr);
-    best->Repair(param.halvingRounds > 0);
+    best->Repair();
     // A surface split (halved or carved) from the one `earlier` meshed, with its cells rebuilt
-    // and meshed with repairs (progress: one step per round), shorter if `halvingFollows`;
-    // nullptr if its cells do not trace, which cells grown as discs always do: the best output
-    // so far stays then.
-    auto meshSplit = [&](MeshingSurface &split, const Mesher &earlier, bool halvingFollows) -> std::unique_ptr<Mesher> {
+    // and meshed with repairs (progress: one step per round); nullptr if its cells do not
+    // trace, which cells grown as discs always do: the best output so far stays then.
+    auto meshSplit = [&](MeshingSurface &split, const Mesher &earlier) -> std::unique_ptr<Mesher> {
         std::string internalError;
         if (!detail::BuildCellsAndLoops(split, internalError)) return nullptr;
         std::unique_ptr<Mesher> mesher = mesherOf(split, nullptr, &earlier);
-        mesher->Repair(halvingFollows);
+        mesher->Repair();
         return mesher;
     };
     // Where the output still intersects itself, the cells of the intersecting faces are halved
@@ -996,7 +965,7 @@ MeshingReport BuildApproximatingMesh(const IndexedMesh &in, const Partition &par
             auto halved = std::make_shared<MeshingSurface>(*latest);
             const int cellsHalved = HalveCells(*halved, flagged);
             std::unique_ptr<Mesher> attempt =
-                cellsHalved > 0 ? meshSplit(*halved, latestAttempt ? *latestAttempt : *best, round < param.halvingRounds) : nullptr;
+                cellsHalved > 0 ? meshSplit(*halved, latestAttempt ? *latestAttempt : *best) : nullptr;
             if (!attempt) break;
             halvedSoFar += cellsHalved;
             const detail::PassDefects &defects = attempt->Best().defects;
@@ -1016,7 +985,6 @@ MeshingReport BuildApproximatingMesh(const IndexedMesh &in, const Partition &par
                 break;
         }
     }
-    best->FinishRepair();
     const double faceBudget = param.maxInputFacesGrowth * double(best->Best().pass.triangles.size());
     best->KeepInputFaces(faceBudget);
     // Where pairs remain (keeping whole cells as input faces broke the budget, or moved the
@@ -1039,7 +1007,7 @@ MeshingReport BuildApproximatingMesh(const IndexedMesh &in, const Partition &par
             for (char intersects : intersectingInput) inputIntersectsThere |= intersects;
             auto carved = std::make_shared<MeshingSurface>(*latest);
             const int pieces = CarveCells(*carved, detail::CarvingSeeds(*latest, pass, defects, intersectingInput));
-            std::unique_ptr<Mesher> attempt = pieces > 0 ? meshSplit(*carved, latestMesher, false) : nullptr;
+            std::unique_ptr<Mesher> attempt = pieces > 0 ? meshSplit(*carved, latestMesher) : nullptr;
             latestAttempt.reset();  // done with its pass, before its surface goes
             if (!attempt) break;
             carvedSoFar += pieces;
