@@ -160,15 +160,12 @@ namespace detail {
 /// 221, 383, ...). Replayed on the per-round defect counts of 163 runs (CGAL's sample meshes
 /// at k=50 with three seedings, and the 60-case sweep), these values never lost a better
 /// output (ranked by total defects, or by intersections first) and ran 10% fewer passes;
-/// 4 rounds, or 1.5 times, lost one. Giving up sooner whatever the divergence, and halving
-/// instead, runs a third fewer passes on CGAL's sample meshes (3 seedings, k = 20 and 100) but
-/// loses outputs. After 2 fruitless rounds: boeing's repair, which climbs from 384 pairs to 774
-/// before reaching 0 at round 11, is halved instead (Hausdorff 1.4 times higher), and "eight"
-/// at k=100 stays folded (3.4 times farther from its input). After 3 rounds, or 2 on halved
-/// surfaces only, diplodocus at k=20 keeps 16 (2) pairs where it had none. After 2 rounds only
-/// while pairs remain and halving follows, resuming the repair if halving does no better
-/// (39% and 30% fewer passes at k = 20 and 100), lion-head at k=20 under L2 (hierarchical)
-/// keeps 5 pairs where it had none: halving from a repair cut short ends elsewhere.
+/// 4 rounds, or 1.5 times, lost one. Giving up sooner and halving instead (after 2 or 3
+/// fruitless rounds; or only while pairs remain, resuming if halving does no better) ran 30%
+/// to 47% fewer passes on CGAL's sample meshes at k = 20 and 100, but lost outputs: a late
+/// recovery (boeing: 384 pairs, up to 774, down to 0 at round 11), a fold left ("eight" at
+/// k=100, 3.4 times farther from its input), pairs left on clean inputs (lion-head at k=20,
+/// L2, hierarchical: 5).
 constexpr int kRepairPatience = 5;
 constexpr size_t kRepairDivergence = 2;
 
