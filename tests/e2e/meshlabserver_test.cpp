@@ -368,6 +368,16 @@ TEST(MeshLabServerBadInput, NonManifoldEdge)
                        "non-manifold");
 }
 
+TEST(MeshLabServerBadInput, InconsistentOrientation)
+{
+    const fs::path dir = WorkDir("bad_orientation");
+    // Two triangles walking their shared edge 1-2 the same way.
+    const fs::path pair = WriteOff(dir, "pair.off", "OFF\n4 2 0\n0 0 0\n1 0 0\n0 1 0\n1 1 0\n3 0 1 2\n3 1 2 3\n");
+    ExpectCleanFailure(RunServer(dir, "-i " + Quote(pair.string()) + " -s " +
+                                          Quote(WriteVsaScript(dir, {{"ProxyNum", "1"}}).string())),
+                       "not consistently oriented");
+}
+
 TEST(MeshLabServerBadInput, NaNCoordinates)
 {
     const fs::path dir = WorkDir("bad_nan");

@@ -7,6 +7,7 @@
 #include <vsa/approximation.h>
 #include <vsa/meshing.h>
 
+#include <algorithm>
 #include <chrono>
 #include <exception>
 #include <string>
@@ -90,6 +91,17 @@ ShapeApproximationResult ApproximateShape(const InMeshType &in, OutMeshType &out
                            " vertices with NaN or infinite coordinates; remove them first "
                            "(MeshLab: Cleaning and Repairing > Remove Unreferenced/Duplicate Vertices after "
                            "fixing them).";
+            return result;
+        }
+        // An input the meshing will refuse is refused here, before the partition. The input's
+        // edge counts are the meshing's own when no face repeats a vertex (it leaves those out);
+        // otherwise the meshing tells.
+        const bool repeatedVertex = std::any_of(snapshot.faces.begin(), snapshot.faces.end(), [](const auto &t) {
+            return t[0] == t[1] || t[1] == t[2] || t[2] == t[0];
+        });
+        const std::string refusal = repeatedVertex ? std::string() : MeshingRefusal(result.input);
+        if (!refusal.empty()) {
+            result.error = "The mesh cannot be approximated: " + refusal;
             return result;
         }
 

@@ -432,6 +432,21 @@ inline bool BuildCellsAndLoops(MeshingSurface &s, std::string &error)
 
 }  // namespace detail
 
+/// Why BuildMeshingSurface refuses a mesh whose faces with three distinct vertices have these
+/// diagnostics (see LinkFaces), in words meant for the user; empty if it does not.
+inline std::string MeshingRefusal(const MeshDiagnostics &diag)
+{
+    if (diag.nonManifoldEdges > 0)
+        return "the mesh has " + std::to_string(diag.nonManifoldEdges) +
+               " non-manifold edges (shared by more than two faces); repair them first "
+               "(MeshLab: Cleaning and Repairing > Repair non Manifold Edges)";
+    if (diag.inconsistentEdges > 0)
+        return "the mesh is not consistently oriented (" + std::to_string(diag.inconsistentEdges) +
+               " edges are walked the same way by both faces); orient it first "
+               "(MeshLab: Normals > Re-Orient all faces coherently)";
+    return {};
+}
+
 /// Builds the surface the meshing stage walks, or returns false with the reason in `error`.
 ///
 /// Accepted input: finite coordinates; every edge shared by at most two faces, walked in
@@ -467,18 +482,8 @@ inline bool BuildMeshingSurface(const IndexedMesh &im, const std::vector<int> &f
     }
     MeshDiagnostics diag;
     detail::LinkFaces(kept, diag);
-    if (diag.nonManifoldEdges > 0) {
-        error = "the mesh has " + std::to_string(diag.nonManifoldEdges) +
-                " non-manifold edges (shared by more than two faces); repair them first "
-                "(MeshLab: Cleaning and Repairing > Repair non Manifold Edges)";
-        return false;
-    }
-    if (diag.inconsistentEdges > 0) {
-        error = "the mesh is not consistently oriented (" + std::to_string(diag.inconsistentEdges) +
-                " edges are walked the same way by both faces); orient it first "
-                "(MeshLab: Normals > Re-Orient all faces coherently)";
-        return false;
-    }
+    error = MeshingRefusal(diag);
+    if (!error.empty()) return false;
     s.positions = std::move(kept.positions);
     s.sourceVertex.resize(s.positions.size());
     std::iota(s.sourceVertex.begin(), s.sourceVertex.end(), 0);

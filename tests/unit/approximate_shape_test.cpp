@@ -1,0 +1,82 @@
+// ApproximateShape, the whole pipeline in one call: what it gives, and how it refuses.
+#include "test_meshes.h"
+
+#include <vsa/approximate_shape.h>
+
+#include <gtest/gtest.h>
+
+#include <string>
+
+namespace {
+
+using namespace vcg::tri::vsa;
+using vsa_test::TMesh;
+
+int progressCalls = 0;
+bool CountProgress(int, const char *)
+{
+    ++progressCalls;
+    return true;
+}
+
+/// Runs ApproximateShape with k proxies, counting progress calls in progressCalls.
+ShapeApproximationResult Approximate(const TMesh &in, TMesh &out, int k)
+{
+    ShapeApproximationParam param;
+    param.partition.proxyCount = k;
+    progressCalls = 0;
+    return ApproximateShape(in, out, param, &CountProgress);
+}
+
+TEST(ApproximateShape, CubeBecomesItsSixSides)
+{
+    TMesh cube, out;
+    vsa_test::MakeTessellatedCube(cube, 4);
+    const ShapeApproximationResult r = Approximate(cube, out, 6);
+    ASSERT_TRUE(r.ok) << r.error;
+    EXPECT_EQ(out.VN(), 8);
+    EXPECT_EQ(out.FN(), 12);
+    EXPECT_EQ(r.meshing.regions, 6);
+    EXPECT_GT(progressCalls, 0);
+    ASSERT_EQ(r.inputFaceRegion.size(), cube.face.size());
+    for (size_t f = 0; f < cube.face.size(); ++f) EXPECT_GE(r.inputFaceRegion[f], 0);
+}
+
+/// A mesh the meshing cannot take is refused with the meshing's reason before any partitioning
+/// (no progress reported), when its own edge counts are the meshing's.
+TEST(ApproximateShape, RefusesWhatItCannotMeshBeforePartitioning)
+{
+    auto expectRefusedUpFront = [](const TMesh &m, const std::string &words) {
+        TMesh out;
+        const ShapeApproximationResult r = Approximate(m, out, 1);
+        EXPECT_FALSE(r.ok);
+        EXPECT_NE(r.error.find(words), std::string::npos) << r.error;
+        EXPECT_EQ(progressCalls, 0) << r.error;
+        EXPECT_EQ(out.FN(), 0);
+    };
+    TMesh book;  // three faces on one edge
+    vsa_test::BuildFromLists(book, {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}},
+                             {{0, 1, 2}, {1, 0, 3}, {0, 1, 4}});
+    expectRefusedUpFront(book, "non-manifold edges");
+
+    TMesh cube;  // one face turned over: three edges walked the same way twice
+    vsa_test::MakeTessellatedCube(cube, 3);
+    std::swap(cube.face[5].V(1), cube.face[5].V(2));
+    expectRefusedUpFront(cube, "not consistently oriented (3 edges");
+}
+
+/// With a face that repeats a vertex (which the meshing leaves out, so that the input's edge
+/// counts are not its own) the meshing still refuses an unoriented mesh, for the same reason.
+TEST(ApproximateShape, RefusesAnUnorientedMeshWithARepeatedVertexFaceToo)
+{
+    TMesh cube, out;
+    vsa_test::MakeTessellatedCube(cube, 3);
+    std::swap(cube.face[5].V(1), cube.face[5].V(2));
+    vcg::tri::Allocator<TMesh>::AddFace(cube, &cube.vert[0], &cube.vert[0], &cube.vert[1]);
+    const ShapeApproximationResult r = Approximate(cube, out, 6);
+    EXPECT_FALSE(r.ok);
+    EXPECT_NE(r.error.find("not consistently oriented (3 edges"), std::string::npos) << r.error;
+    EXPECT_EQ(out.FN(), 0);
+}
+
+}  // namespace
