@@ -28,9 +28,12 @@ void AddOutputQualityKeys(JsonLine &line, InMeshType &input, OutMeshType &output
         .Add("self_intersections", out.selfIntersections);
     const SurfaceDistance distance = MeasureSurfaceDistance(input, output);
     if (distance.valid)
-        line.Add("hausdorff_max", distance.max).Add("hausdorff_mean", distance.mean).Add("hausdorff_rms", distance.rms);
+        line.Add("hausdorff_max", distance.max)
+            .Add("hausdorff_mean", distance.mean)
+            .Add("hausdorff_rms", distance.rms)
+            .Add("facing_away", distance.facingAway);
     else
-        line.AddNull("hausdorff_max").AddNull("hausdorff_mean").AddNull("hausdorff_rms");
+        line.AddNull("hausdorff_max").AddNull("hausdorff_mean").AddNull("hausdorff_rms").AddNull("facing_away");
 }
 
 }  // namespace vsa_bench

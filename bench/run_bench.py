@@ -55,7 +55,7 @@ QECD_PARAMETERS = [
 
 MEASURE_KEYS = ["out_vertices", "out_faces", "manifold", "closed", "oriented", "euler_in", "euler_out",
                 "degenerate_faces", "duplicate_faces", "self_intersections", "closed_in",
-                "hausdorff_max", "hausdorff_mean", "hausdorff_rms"]
+                "hausdorff_max", "hausdorff_mean", "hausdorff_rms", "facing_away"]
 
 
 def find_tool(env_name, names):
@@ -180,14 +180,15 @@ def per_iteration_us_per_face(r):
 
 def table(records):
     header = ["mesh", "k", "init", "tool", "energy", "us/f/it", "t_seed", "t_iter", "t_mesh", "RSS MB",
-              "out_f", "valid", "H max", "H mean"]
+              "out_f", "valid", "H max", "H mean", "away %"]
     rows = [header]
     for r in records:
         rows.append([r["case_mesh"], str(r["case_k"]), r["case_init"], r.get("tool", "-"),
                      fmt(r.get("energy"), "%.5g"), fmt(per_iteration_us_per_face(r), "%.3f"),
                      fmt(r.get("t_seed_s")), fmt(r.get("t_iterations_s")), fmt(r.get("t_mesh_s")),
                      fmt(r.get("peak_rss_mb"), "%.0f"), fmt(r.get("out_faces")), validity_label(r),
-                     fmt(r.get("hausdorff_max"), "%.2e"), fmt(r.get("hausdorff_mean"), "%.2e")])
+                     fmt(r.get("hausdorff_max"), "%.2e"), fmt(r.get("hausdorff_mean"), "%.2e"),
+                     fmt(None if r.get("facing_away") is None else 100 * r["facing_away"], "%.2f")])
     widths = [max(len(row[i]) for row in rows) for i in range(len(header))]
     lines = ["  ".join(cell.ljust(w) for cell, w in zip(row, widths)).rstrip() for row in rows]
     lines.insert(1, "  ".join("-" * w for w in widths))
@@ -195,6 +196,7 @@ def table(records):
     lines.append("energy: the metric's total distortion; us/f/it = t_iterations_s / iterations / faces * 1e6;"
                  " times in s;")
     lines.append("qecd t_mesh is the whole meshlabserver process; H = symmetric Hausdorff / input bbox diagonal;")
+    lines.append("away % = share of the output's area whose nearest input face points the other way (folds);")
     lines.append("errors: see results.jsonl.")
     return "\n".join(lines)
 

@@ -36,6 +36,10 @@ struct SurfaceDistance
     double mean = 0;     ///< over the area samples of both directions
     double rms = 0;
     long samples = 0;    ///< area samples, both sides together
+    /// Share of the approximation's area samples whose nearest reference face points the other
+    /// way (negative dot product of the two face normals): folds and flipped triangles, which
+    /// shade dark where the input does not.
+    double facingAway = 0;
 };
 
 namespace distance_detail {
@@ -79,17 +83,33 @@ void CopyLiveFaces(const SourceMesh &source, Mesh &copy)
     vcg::tri::UpdateNormal<Mesh>::PerFaceNormalized(copy);
 }
 
+/// Area samples, each with the normal of the face it lies on.
+struct FaceSamples
+{
+    std::vector<vcg::Point3d> points, normals;
+
+    // What vcg's SurfaceSampling asks of a sampler; only faces are sampled here.
+    void AddFace(const Face &f, const vcg::Point3d &barycentric)
+    {
+        points.push_back(f.cP(0) * barycentric[0] + f.cP(1) * barycentric[1] + f.cP(2) * barycentric[2]);
+        normals.push_back(f.cN());
+    }
+    void AddVert(const Vertex &) {}
+    void AddEdge(const typename Mesh::EdgeType &, double) {}
+    void AddTextureSample(const Face &, const vcg::Point3d &, const vcg::Point2i &, float) {}
+};
+
 using Sampling = vcg::tri::SurfaceSampling<Mesh, vcg::tri::TrivialSampler<Mesh>>;
+using FaceSampling = vcg::tri::SurfaceSampling<Mesh, FaceSamples>;
 
 /// Area samples with a fixed seed: the same meshes always give the same figures.
-inline std::vector<vcg::Point3d> SampleFaces(Mesh &m, int sampleCount, unsigned seed)
+inline FaceSamples SampleFaces(Mesh &m, int sampleCount, unsigned seed)
 {
-    std::vector<vcg::Point3d> samples;
-    vcg::tri::TrivialSampler<Mesh> sampler(samples);
-    Sampling::SamplingRandomGenerator().initialize(seed);
+    FaceSamples samples;
+    FaceSampling::SamplingRandomGenerator().initialize(seed);
     // Stratified: every face gets its area's share (remainders carried over), which spreads
     // samples more evenly than picking faces at random.
-    Sampling::StratifiedMontecarlo(m, sampler, sampleCount);
+    FaceSampling::StratifiedMontecarlo(m, samples, sampleCount);
     return samples;
 }
 
@@ -108,42 +128,51 @@ struct OneWay
 {
     double max = 0, sum = 0, sumOfSquares = 0;
     long count = 0;
+    long facingAway = 0;  ///< area samples whose nearest face's normal opposes their own
     bool allFound = true;
 };
 
-/// Distance from `p` to the nearest face of `target`; empty if none was found (non-finite
-/// coordinates), which the caller reports instead of a made-up figure.
-inline std::optional<double> DistanceToSurface(Mesh &target, Grid &grid, const vcg::Point3d &p,
-                                               double searchRadius)
+struct NearestFace
+{
+    double distance;
+    const Face *face;
+};
+
+/// The nearest face of `target` to `p`; empty if none was found (non-finite coordinates),
+/// which the caller reports instead of a made-up figure.
+inline std::optional<NearestFace> NearestFaceTo(Mesh &target, Grid &grid, const vcg::Point3d &p, double searchRadius)
 {
     double distance = searchRadius;
     vcg::Point3d closest;
-    if (!vcg::tri::GetClosestFaceBase(target, grid, p, searchRadius, distance, closest)) return std::nullopt;
-    return distance;
+    const Face *face = vcg::tri::GetClosestFaceBase(target, grid, p, searchRadius, distance, closest);
+    if (!face) return std::nullopt;
+    return NearestFace{distance, face};
 }
 
 /// Distances to the surface of `to`: area samples feed all three figures, feature samples
 /// (vertices and edges) only the maximum, so that they do not skew the area average.
-inline OneWay MeasureOneWay(const std::vector<vcg::Point3d> &areaSamples,
-                            const std::vector<vcg::Point3d> &featureSamples, Mesh &to, double searchRadius)
+inline OneWay MeasureOneWay(const FaceSamples &areaSamples, const std::vector<vcg::Point3d> &featureSamples,
+                            Mesh &to, double searchRadius)
 {
     Grid grid;
     grid.Set(to.face.begin(), to.face.end());
     OneWay result;
-    for (const vcg::Point3d &p : areaSamples) {
-        const std::optional<double> d = DistanceToSurface(to, grid, p, searchRadius);
-        if (!d) {
+    for (size_t i = 0; i < areaSamples.points.size(); ++i) {
+        const std::optional<NearestFace> nearest = NearestFaceTo(to, grid, areaSamples.points[i], searchRadius);
+        if (!nearest) {
             result.allFound = false;
             continue;
         }
-        result.max = std::max(result.max, *d);
-        result.sum += *d;
-        result.sumOfSquares += *d * *d;
+        const double d = nearest->distance;
+        result.max = std::max(result.max, d);
+        result.sum += d;
+        result.sumOfSquares += d * d;
         ++result.count;
+        result.facingAway += nearest->face->cN() * areaSamples.normals[i] < 0;
     }
     for (const vcg::Point3d &p : featureSamples) {
-        const std::optional<double> d = DistanceToSurface(to, grid, p, searchRadius);
-        if (d) result.max = std::max(result.max, *d);
+        const std::optional<NearestFace> nearest = NearestFaceTo(to, grid, p, searchRadius);
+        if (nearest) result.max = std::max(result.max, nearest->distance);
         else result.allFound = false;
     }
     return result;
@@ -173,8 +202,8 @@ SurfaceDistance MeasureSurfaceDistance(const ReferenceMesh &reference, const App
         return int(std::min(double(options.maxSamplesPerSide), std::ceil(density * area)));
     };
     const int refCount = sampleCount(refArea), approxCount = sampleCount(approxArea);
-    const std::vector<vcg::Point3d> refSamples = SampleFaces(ref, refCount, options.seed);
-    const std::vector<vcg::Point3d> approxSamples = SampleFaces(approx, approxCount, options.seed + 1);
+    const FaceSamples refSamples = SampleFaces(ref, refCount, options.seed);
+    const FaceSamples approxSamples = SampleFaces(approx, approxCount, options.seed + 1);
 
     // Every point of either mesh lies within this radius of every face of the other.
     vcg::Box3d both = ref.bbox;
@@ -192,6 +221,7 @@ SurfaceDistance MeasureSurfaceDistance(const ReferenceMesh &reference, const App
     result.max = std::max(forward.max, backward.max) / diagonal;
     result.mean = (forward.sum + backward.sum) / double(count) / diagonal;
     result.rms = std::sqrt((forward.sumOfSquares + backward.sumOfSquares) / double(count)) / diagonal;
+    result.facingAway = backward.count > 0 ? double(backward.facingAway) / double(backward.count) : 0;
     return result;
 }
 
