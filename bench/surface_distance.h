@@ -88,15 +88,12 @@ struct FaceSamples
 {
     std::vector<vcg::Point3d> points, normals;
 
-    // What vcg's SurfaceSampling asks of a sampler; only faces are sampled here.
+    /// What vcg's SurfaceSampling calls for a point on face f (StratifiedMontecarlo needs no other).
     void AddFace(const Face &f, const vcg::Point3d &barycentric)
     {
         points.push_back(f.cP(0) * barycentric[0] + f.cP(1) * barycentric[1] + f.cP(2) * barycentric[2]);
         normals.push_back(f.cN());
     }
-    void AddVert(const Vertex &) {}
-    void AddEdge(const typename Mesh::EdgeType &, double) {}
-    void AddTextureSample(const Face &, const vcg::Point3d &, const vcg::Point2i &, float) {}
 };
 
 using Sampling = vcg::tri::SurfaceSampling<Mesh, vcg::tri::TrivialSampler<Mesh>>;
