@@ -330,31 +330,32 @@ fs::path WriteOff(const fs::path &dir, const std::string &name, const std::strin
     std::ofstream(path) << text;
     return path;
 }
+
+/// Runs the filter on `mesh` with ProxyNum = k, every other parameter at its default.
+ServerRun RunWithProxyNum(const fs::path &dir, const fs::path &mesh, const std::string &k)
+{
+    return RunServer(dir, "-i " + Quote(mesh.string()) + " -s " +
+                              Quote(WriteVsaScript(dir, {{"ProxyNum", k}}).string()));
+}
 }  // namespace
 
 TEST(MeshLabServerBadInput, ProxyNumBelowOne)
 {
     const fs::path dir = WorkDir("bad_k0");
-    ExpectCleanFailure(RunServer(dir, "-i " + Quote(kFandisk) + " -s " +
-                                          Quote(WriteVsaScript(dir, {{"ProxyNum", "0"}}).string())),
-                       "at least 1");
+    ExpectCleanFailure(RunWithProxyNum(dir, kFandisk, "0"), "at least 1");
 }
 
 TEST(MeshLabServerBadInput, ProxyNumAboveFaceCount)
 {
     const fs::path dir = WorkDir("bad_k_large");
-    ExpectCleanFailure(RunServer(dir, "-i " + Quote(kFandisk) + " -s " +
-                                          Quote(WriteVsaScript(dir, {{"ProxyNum", "20000"}}).string())),
-                       "exceeds the number of faces (12946)");
+    ExpectCleanFailure(RunWithProxyNum(dir, kFandisk, "20000"), "exceeds the number of faces (12946)");
 }
 
 TEST(MeshLabServerBadInput, PointCloud)
 {
     const fs::path dir = WorkDir("bad_point_cloud");
     const fs::path cloud = WriteOff(dir, "cloud.off", "OFF\n4 0 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n");
-    ExpectCleanFailure(RunServer(dir, "-i " + Quote(cloud.string()) + " -s " +
-                                          Quote(WriteVsaScript(dir, {{"ProxyNum", "1"}}).string())),
-                       "point cloud");
+    ExpectCleanFailure(RunWithProxyNum(dir, cloud, "1"), "point cloud");
 }
 
 TEST(MeshLabServerBadInput, NonManifoldEdge)
@@ -363,9 +364,7 @@ TEST(MeshLabServerBadInput, NonManifoldEdge)
     // Three triangles sharing the edge 0-1.
     const fs::path book = WriteOff(dir, "book.off",
                                    "OFF\n5 3 0\n0 0 0\n1 0 0\n0 1 0\n0 -1 0\n0 0 1\n3 0 1 2\n3 1 0 3\n3 0 1 4\n");
-    ExpectCleanFailure(RunServer(dir, "-i " + Quote(book.string()) + " -s " +
-                                          Quote(WriteVsaScript(dir, {{"ProxyNum", "2"}}).string())),
-                       "non-manifold");
+    ExpectCleanFailure(RunWithProxyNum(dir, book, "2"), "non-manifold");
 }
 
 TEST(MeshLabServerBadInput, InconsistentOrientation)
@@ -373,25 +372,19 @@ TEST(MeshLabServerBadInput, InconsistentOrientation)
     const fs::path dir = WorkDir("bad_orientation");
     // Two triangles walking their shared edge 1-2 the same way.
     const fs::path pair = WriteOff(dir, "pair.off", "OFF\n4 2 0\n0 0 0\n1 0 0\n0 1 0\n1 1 0\n3 0 1 2\n3 1 2 3\n");
-    ExpectCleanFailure(RunServer(dir, "-i " + Quote(pair.string()) + " -s " +
-                                          Quote(WriteVsaScript(dir, {{"ProxyNum", "1"}}).string())),
-                       "not consistently oriented");
+    ExpectCleanFailure(RunWithProxyNum(dir, pair, "1"), "not consistently oriented");
 }
 
 TEST(MeshLabServerBadInput, NaNCoordinates)
 {
     const fs::path dir = WorkDir("bad_nan");
     const fs::path mesh = WriteOff(dir, "nan.off", "OFF\n4 2 0\n0 0 0\n1 0 0\n0 1 0\nnan 1 0\n3 0 1 2\n3 2 1 3\n");
-    ExpectCleanFailure(RunServer(dir, "-i " + Quote(mesh.string()) + " -s " +
-                                          Quote(WriteVsaScript(dir, {{"ProxyNum", "1"}}).string())),
-                       "NaN");
+    ExpectCleanFailure(RunWithProxyNum(dir, mesh, "1"), "NaN");
 }
 
 TEST(MeshLabServerBadInput, EmptyMesh)
 {
     const fs::path dir = WorkDir("bad_empty");
     const fs::path empty = WriteOff(dir, "empty.off", "OFF\n0 0 0\n");
-    ExpectCleanFailure(RunServer(dir, "-i " + Quote(empty.string()) + " -s " +
-                                          Quote(WriteVsaScript(dir, {{"ProxyNum", "1"}}).string())),
-                       "The mesh is empty.");
+    ExpectCleanFailure(RunWithProxyNum(dir, empty, "1"), "The mesh is empty.");
 }

@@ -7,7 +7,6 @@
 #include <vsa/approximation.h>
 #include <vsa/meshing.h>
 
-#include <algorithm>
 #include <chrono>
 #include <exception>
 #include <string>
@@ -93,13 +92,8 @@ ShapeApproximationResult ApproximateShape(const InMeshType &in, OutMeshType &out
                            "fixing them).";
             return result;
         }
-        // An input the meshing will refuse is refused here, before the partition. The input's
-        // edge counts are the meshing's own when no face repeats a vertex (it leaves those out);
-        // otherwise the meshing tells.
-        const bool repeatedVertex = std::any_of(snapshot.faces.begin(), snapshot.faces.end(), [](const auto &t) {
-            return t[0] == t[1] || t[1] == t[2] || t[2] == t[0];
-        });
-        const std::string refusal = repeatedVertex ? std::string() : MeshingRefusal(result.input);
+        // An input the meshing will refuse is refused here, before the partition.
+        const std::string refusal = MeshingRefusal(snapshot, result.input);
         if (!refusal.empty()) {
             result.error = "The mesh cannot be approximated: " + refusal;
             return result;

@@ -447,6 +447,16 @@ inline std::string MeshingRefusal(const MeshDiagnostics &diag)
     return {};
 }
 
+/// MeshingRefusal known before any partition, from `im` and its BuildIndexedMesh diagnostics.
+/// Those count the edges of every face, BuildMeshingSurface only those of faces with three
+/// distinct vertices: with a face that repeats a vertex the counts may differ, and only
+/// BuildMeshingSurface can tell (empty here).
+inline std::string MeshingRefusal(const IndexedMesh &im, const MeshDiagnostics &diag)
+{
+    if (std::any_of(im.faces.begin(), im.faces.end(), RepeatsVertex)) return {};
+    return MeshingRefusal(diag);
+}
+
 /// Builds the surface the meshing stage walks, or returns false with the reason in `error`.
 ///
 /// Accepted input: finite coordinates; every edge shared by at most two faces, walked in
@@ -468,7 +478,7 @@ inline bool BuildMeshingSurface(const IndexedMesh &im, const std::vector<int> &f
     kept.positions = im.positions;
     for (int f = 0; f < im.FaceCount(); ++f) {
         const auto &t = im.faces[f];
-        if (t[0] == t[1] || t[1] == t[2] || t[2] == t[0]) {
+        if (RepeatsVertex(t)) {
             ++s.ignoredFaces;
             continue;
         }

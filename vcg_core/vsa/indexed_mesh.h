@@ -38,6 +38,9 @@ struct IndexedMesh
     int VertexCount() const { return int(positions.size()); }
 };
 
+/// Whether triangle t uses a vertex twice: it has no area and no edges of its own.
+inline bool RepeatsVertex(const std::array<int, 3> &t) { return t[0] == t[1] || t[1] == t[2] || t[2] == t[0]; }
+
 /// What is wrong or unusual in an input mesh; each stage decides what it can accept.
 struct MeshDiagnostics
 {
@@ -250,7 +253,7 @@ IndexedMesh BuildIndexedMesh(const MeshType &m, MeshDiagnostics *diagnostics = n
     for (const auto &t : im.faces) {
         const double doubleArea =
             ((im.positions[t[1]] - im.positions[t[0]]) ^ (im.positions[t[2]] - im.positions[t[0]])).Norm();
-        if (t[0] == t[1] || t[1] == t[2] || t[2] == t[0] || !(doubleArea > 2 * tinyArea))
+        if (RepeatsVertex(t) || !(doubleArea > 2 * tinyArea))
             ++diag.degenerateFaces;
     }
 

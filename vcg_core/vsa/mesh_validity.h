@@ -294,7 +294,7 @@ inline std::vector<char> DegenerateFaceMask(const IndexedMesh &im)
         const auto &t = im.faces[f];
         const double doubleArea =
             ((im.positions[t[1]] - im.positions[t[0]]) ^ (im.positions[t[2]] - im.positions[t[0]])).Norm();
-        degenerate[f] = t[0] == t[1] || t[1] == t[2] || t[2] == t[0] || !(doubleArea > 2 * tinyArea);
+        degenerate[f] = RepeatsVertex(t) || !(doubleArea > 2 * tinyArea);
     }
     return degenerate;
 }
