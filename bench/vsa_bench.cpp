@@ -172,7 +172,8 @@ int main(int argc, char **argv)
             .Add("halving_rounds", meshing.halvingRounds)
             .Add("cells_halved", meshing.cellsHalved)
             .Add("carving_rounds", meshing.carvingRounds)
-            .Add("pieces_carved", meshing.piecesCarved);
+            .Add("pieces_carved", meshing.piecesCarved)
+            .Add("close_pairs", meshing.closePairs);
         vsa_bench::AddOutputQualityKeys(json, m, output);
         if (!o.out.empty() && !WriteApproximation(output, meshing.faceRegion, partition.proxyCount, o.out)) {
             json.Add("error", "cannot write " + o.out).Print();

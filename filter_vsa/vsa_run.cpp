@@ -61,6 +61,10 @@ void Describe(const vsa::ShapeApproximationResult &r, const VsaFilterSettings &s
                .arg(m.cellsHalved)
                .arg(m.piecesCarved);
     log << QString("VSA: output: %1").arg(QString::fromStdString(m.validity.Summary()));
+    if (m.closePairs > 0)
+        log << QString("VSA: warning: %1 face pairs of the output come closer than text files (OFF, OBJ, ASCII PLY "
+                       "or STL) keep them apart: read back, they may intersect; binary PLY keeps them exactly")
+                   .arg(m.closePairs);
     log << QString("VSA: time: seeding %1 s, iterations %2 s, meshing %3 s (%5), total %4 s")
                .arg(r.secondsSeeding, 0, 'f', 3)
                .arg(r.secondsIterations, 0, 'f', 3)
@@ -80,6 +84,7 @@ void Describe(const vsa::ShapeApproximationResult &r, const VsaFilterSettings &s
     f["regions_kept_as_input"] = m.regionsKeptAsInput;
     f["cells_halved"] = m.cellsHalved;
     f["pieces_carved"] = m.piecesCarved;
+    f["close_pairs"] = m.closePairs;
     f["manifold"] = m.validity.IsTwoManifold();
     f["closed"] = m.validity.IsClosed();
     f["oriented"] = m.validity.IsOriented();

@@ -315,6 +315,54 @@ TEST(MeshLabServer, EveryComponentIsApproximated)
 }
 
 namespace {
+/// The filter's own defaults but for k and farthest seeding: what a user gets from the dialog.
+std::map<std::string, std::string> DialogDefaultsFarthest(const std::string &k)
+{
+    return {{"ProxyNum", k}, {"Init", "1"}, {"MaxIterations", "30"}, {"RandomSeed", "0"}, {"Teleport", "true"}};
+}
+
+const char kClosePairsWarning[] = "face pairs of the output come closer than text files";
+}  // namespace
+
+// MeshLab writes OFF with 7 significant digits; a reader in double (pymeshlab, CGAL, ...) gets
+// those decimals, a few units in the last place of a float away from what was checked. On
+// cheese at k=20 (farthest) faces 1e-8 apart then met: 4 intersecting pairs. The meshing now
+// keeps faces farther apart than that rounding moves them.
+TEST(MeshLabServer, OutputSavedAsOffStaysFreeOfSelfIntersectionsReadInDoubleOrFloat)
+{
+    const fs::path dir = WorkDir("saved_as_off");
+    const fs::path off = dir / "cheese_vsa.off";
+    const ServerRun run = RunServer(dir, "-i " + Quote(vsa_test::CgalMesh("cheese.off")) + " -s " +
+                                             Quote(WriteVsaScript(dir, DialogDefaultsFarthest("20")).string()) +
+                                             " -o " + Quote(off.string()) + " -l 1");
+    ASSERT_EQ(run.exitCode, 0) << run.output;
+    EXPECT_EQ(run.output.find(kClosePairsWarning), std::string::npos) << run.output;
+    vsa_test::BareMesh inDouble;
+    int mask = 0;
+    ASSERT_EQ(vcg::tri::io::Importer<vsa_test::BareMesh>::Open(inDouble, off.string().c_str(), mask), 0);
+    const vcg::tri::vsa::MeshValidity doubleValidity = vcg::tri::vsa::CheckMeshValidity(inDouble);
+    EXPECT_GT(doubleValidity.faces, 1000);
+    EXPECT_EQ(doubleValidity.selfIntersections, 0) << doubleValidity.Summary();
+    TMesh inFloat;
+    ASSERT_TRUE(Load(inFloat, off));
+    EXPECT_EQ(vcg::tri::vsa::CheckMeshValidity(inFloat).selfIntersections, 0);
+}
+
+// Where faces stay closer than text files keep them apart (triceratops at k=100), the log says so.
+TEST(MeshLabServer, LogsFacePairsTooCloseForTextFiles)
+{
+    const fs::path dir = WorkDir("close_pairs");
+    const ServerRun run = RunServer(dir, "-i " + Quote(vsa_test::CgalMesh("triceratops.off")) + " -s " +
+                                             Quote(WriteVsaScript(dir, DialogDefaultsFarthest("100")).string()));
+    ASSERT_EQ(run.exitCode, 0) << run.output;
+    const std::regex warning(std::string(R"(VSA: warning: ([0-9]+) )") + kClosePairsWarning);
+    std::smatch match;
+    ASSERT_TRUE(std::regex_search(run.output, match, warning)) << run.output;
+    EXPECT_GT(std::stoi(match[1]), 0);
+    EXPECT_NE(run.output.find("binary PLY keeps them exactly"), std::string::npos);
+}
+
+namespace {
 /// A bad input must fail cleanly: meshlabserver reports the failed filter and exits with its
 /// error status (255), not a crash, and the log carries our message.
 void ExpectCleanFailure(const ServerRun &run, const std::string &message)

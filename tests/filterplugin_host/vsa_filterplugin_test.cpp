@@ -148,6 +148,8 @@ void ExpectApproximation(const HostRun &run, const QString &inputName, const QSt
     EXPECT_GE(figures["cells_halved"].toInt(-1), 0);
     ASSERT_TRUE(figures.contains("pieces_carved")) << run.Dump();
     EXPECT_GE(figures["pieces_carved"].toInt(-1), 0);
+    ASSERT_TRUE(figures.contains("close_pairs")) << run.Dump();
+    EXPECT_GE(figures["close_pairs"].toInt(-1), 0);
     EXPECT_TRUE(figures["manifold"].toBool());
     EXPECT_TRUE(figures["oriented"].toBool());
     EXPECT_EQ(figures["closed"].toBool(), inputClosed);

@@ -10,6 +10,7 @@
 using namespace vcg::tri::vsa;
 using vsa_test::BareMesh;
 using vsa_test::TMesh;
+using vcg::Point3d;
 
 namespace {
 
@@ -201,4 +202,93 @@ TEST(MeshValidity, GridFindsTheSamePairsAsTestingEveryPair)
     ASSERT_GT(withFresh.size(), 100u);
     EXPECT_EQ(detail::SelfIntersectingPairs(soup, degenerate, {}), all);
     EXPECT_EQ(detail::SelfIntersectingPairs(soup, degenerate, fresh), withFresh);
+}
+
+namespace {
+
+/// Pairs of `faces` on `positions` that intersect, or come within `clearance` of each other.
+std::vector<std::pair<int, int>> PairsWithin(const std::vector<Point3d> &positions,
+                                             const std::vector<std::array<int, 3>> &faces, double clearance)
+{
+    IndexedMesh im;
+    im.positions = positions;
+    im.faces = faces;
+    return detail::SelfIntersectingPairs(im, detail::DegenerateFaceMask(im), {}, clearance);
+}
+
+}  // namespace
+
+// A quad folded by `lift` along its diagonal B-D, and a fin on its other diagonal A-C: the fin's
+// edge runs `lift` above the quad, so the faces meet only once their corners move by about that
+// (as cheese's output at k=20 did once saved as text and read back in double).
+TEST(MeshValidity, ClearanceCountsFacesNearlyMeetingAsIntersecting)
+{
+    auto finOverQuad = [](double lift) {
+        return std::vector<Point3d>{{0, 0, lift}, {1, 0, 0}, {1, 1, lift}, {0, 1, 0}, {0.5, 0.5, 1}};
+    };
+    const std::vector<std::array<int, 3>> faces = {{0, 1, 3}, {1, 2, 3}, {0, 2, 4}};
+    const std::vector<std::pair<int, int>> both = {{0, 2}, {1, 2}};
+    EXPECT_TRUE(PairsWithin(finOverQuad(1e-9), faces, 0).empty());
+    EXPECT_EQ(PairsWithin(finOverQuad(1e-9), faces, 1e-6), both);
+    EXPECT_TRUE(PairsWithin(finOverQuad(1e-4), faces, 1e-6).empty());
+    EXPECT_EQ(PairsWithin(finOverQuad(0), faces, 0), both);  // flat: the fin's edge lies on the quad
+
+    // Sharing edge 0-1, the other corners within the clearance of one half-plane (folded flat,
+    // at an angle of 5e-4 rad the exact test does not see), then clearly apart.
+    auto folded = [](double height) {
+        return std::vector<Point3d>{{0, 0, 0}, {2, 0, 0}, {0, 2, 0}, {1, 1e-3, height}};
+    };
+    const std::vector<std::array<int, 3>> hinge = {{0, 1, 2}, {1, 0, 3}};
+    EXPECT_TRUE(PairsWithin(folded(5e-7), hinge, 0).empty());
+    EXPECT_EQ(PairsWithin(folded(5e-7), hinge, 1e-6), (std::vector<std::pair<int, int>>{{0, 1}}));
+    EXPECT_TRUE(PairsWithin(folded(5e-5), hinge, 1e-6).empty());
+
+    // Disjoint faces: parallel, 5e-7 apart, then crossing planes with a 5e-7 gap between edges.
+    EXPECT_EQ(PairsWithin({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0.1, 0.1, 5e-7}, {1, 0.1, 5e-7}, {0.1, 1, 5e-7}},
+                          {{0, 1, 2}, {3, 4, 5}}, 1e-6)
+                  .size(),
+              1u);
+    EXPECT_EQ(PairsWithin({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0.5, 0.5 + 5e-7, -1}, {0.5, 0.5 + 5e-7, 1}, {2, 2, 0}},
+                          {{0, 1, 2}, {3, 4, 5}}, 1e-6)
+                  .size(),
+              1u);
+    EXPECT_TRUE(PairsWithin({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0.5, 0.5 + 1e-3, -1}, {0.5, 0.5 + 1e-3, 1}, {2, 2, 0}},
+                            {{0, 1, 2}, {3, 4, 5}}, 1e-6)
+                    .empty());
+}
+
+// Neighbouring faces of clean meshes touch at their shared corners only: a clearance finds
+// nothing there, on fans of coplanar faces, around the vertices of a sphere or a torus, and on
+// a real CAD mesh.
+TEST(MeshValidity, ClearanceFindsNothingBetweenNeighboursOfCleanMeshes)
+{
+    std::vector<TMesh> meshes(4);
+    vsa_test::MakeTessellatedCube(meshes[0], 7);
+    vcg::tri::Sphere(meshes[1], 4);
+    vsa_test::MakeTorus(meshes[2], 1, 0.3f, 64, 24);
+    ASSERT_TRUE(vsa_test::LoadMesh(meshes[3], vsa_test::CgalMesh("fandisk.off")));
+    for (const TMesh &m : meshes) {
+        const IndexedMesh im = BuildIndexedMesh(m);
+        const double clearance = detail::SavedCoordinateClearance<float>(im.positions);
+        EXPECT_GT(clearance, 0);
+        EXPECT_TRUE(detail::SelfIntersectingPairs(im, detail::DegenerateFaceMask(im), {}, clearance).empty());
+    }
+}
+
+TEST(MeshValidity, GridFindsTheSamePairsAsTestingEveryPairWithAClearance)
+{
+    const IndexedMesh soup = vsa_test::RandomTriangleSoup(60, 600, 5);
+    const std::vector<char> degenerate = detail::DegenerateFaceMask(soup);
+    const std::vector<detail::FaceShape> shape = detail::ShapesOfFaces(soup, degenerate);
+    const double clearance = 0.005;
+    std::vector<std::pair<int, int>> exact, within;
+    for (int f = 0; f < soup.FaceCount(); ++f)
+        for (int g = f + 1; g < soup.FaceCount(); ++g) {
+            if (degenerate[f] || degenerate[g]) continue;
+            if (detail::FacesIntersect(soup, shape, f, g)) exact.emplace_back(f, g);
+            if (detail::FacesIntersect(soup, shape, f, g, clearance)) within.emplace_back(f, g);
+        }
+    ASSERT_GT(within.size(), exact.size() + 20);
+    EXPECT_TRUE(std::includes(within.begin(), within.end(), exact.begin(), exact.end()));
+    EXPECT_EQ(detail::SelfIntersectingPairs(soup, degenerate, {}, clearance), within);
 }

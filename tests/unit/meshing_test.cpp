@@ -1109,12 +1109,12 @@ TEST(Meshing, PolygonCrossingsAreCarriedOverOnlyForUnchangedPolygons)
     };
     const detail::MeshingPass square = passWith({{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}});
     const detail::MeshingPass bowTie = passWith({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 1, 0}});
-    const detail::PassDefects squareDefects = detail::FindDefects(square);
+    const detail::PassDefects squareDefects = detail::FindDefects(square, 0);
     EXPECT_TRUE(squareDefects.crossings.empty());
-    const detail::PassDefects bowTieDefects = detail::FindDefects(bowTie, &square, &squareDefects);
+    const detail::PassDefects bowTieDefects = detail::FindDefects(bowTie, 0, &square, &squareDefects);
     ASSERT_EQ(bowTieDefects.crossings.size(), 1u);
     EXPECT_EQ(bowTieDefects.crossings[0].edge, 1);  // (1, 0)-(0, 1) across (1, 1)-(0, 0)
     EXPECT_EQ(bowTieDefects.crossings[0].otherEdge, 3);
-    EXPECT_EQ(detail::FindDefects(bowTie, &bowTie, &bowTieDefects).crossings.size(), 1u);
-    EXPECT_TRUE(detail::FindDefects(square, &bowTie, &bowTieDefects).crossings.empty());
+    EXPECT_EQ(detail::FindDefects(bowTie, 0, &bowTie, &bowTieDefects).crossings.size(), 1u);
+    EXPECT_TRUE(detail::FindDefects(square, 0, &bowTie, &bowTieDefects).crossings.empty());
 }

@@ -7,10 +7,13 @@
 #include <vsa/indexed_mesh.h>
 #include <vsa/surface_grid.h>
 
+#include <wrap/io_trimesh/precision.h>
+
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <sstream>
 #include <string>
 #include <utility>
@@ -158,6 +161,87 @@ inline bool SectorsOverlap2d(Point2d u0, Point2d v0, Point2d u1, Point2d v1)
            strictlyInside(v0, u1, v1) || (sameRay(u0, u1) && sameRay(v0, v1));
 }
 
+/// Distance between closed segments p0p1 and q0q1 (Ericson, Real-Time Collision Detection, 5.1.9).
+inline double SegmentsDistance(const Point3d &p0, const Point3d &p1, const Point3d &q0, const Point3d &q1)
+{
+    const Point3d d1 = p1 - p0, d2 = q1 - q0, r = p0 - q0;
+    const double a = d1.SquaredNorm(), e = d2.SquaredNorm(), f = d2 * r;
+    double s = 0, t = 0;
+    if (a <= 0 && e <= 0) return r.Norm();
+    if (a <= 0) {
+        t = std::clamp(f / e, 0.0, 1.0);
+    } else {
+        const double c = d1 * r;
+        if (e <= 0) {
+            s = std::clamp(-c / a, 0.0, 1.0);
+        } else {
+            const double b = d1 * d2, denom = a * e - b * b;
+            s = denom > 0 ? std::clamp((b * f - c * e) / denom, 0.0, 1.0) : 0.0;
+            t = (b * s + f) / e;
+            if (t < 0) {
+                t = 0;
+                s = std::clamp(-c / a, 0.0, 1.0);
+            } else if (t > 1) {
+                t = 1;
+                s = std::clamp((b - c) / a, 0.0, 1.0);
+            }
+        }
+    }
+    return ((p0 + d1 * s) - (q0 + d2 * t)).Norm();
+}
+
+/// Whether closed segments p0p1 and q0q1 come within `clearance` of each other; first by their
+/// boxes, which keep most pairs apart.
+inline bool SegmentsCloser(const Point3d &p0, const Point3d &p1, const Point3d &q0, const Point3d &q1,
+                           double clearance)
+{
+    for (int i = 0; i < 3; ++i)
+        if (std::min(p0[i], p1[i]) > std::max(q0[i], q1[i]) + clearance ||
+            std::min(q0[i], q1[i]) > std::max(p0[i], p1[i]) + clearance)
+            return false;
+    return SegmentsDistance(p0, p1, q0, q1) <= clearance;
+}
+
+/// Whether closed segment pq and closed triangle abc (unit normal n, p and q at heights hp and
+/// hq over its plane), which do not meet, come within `clearance` of each other: an end of the
+/// segment whose projection on the plane falls in the triangle, or an edge of the triangle.
+inline bool SegmentTriangleCloser(const Point3d &p, const Point3d &q, double hp, double hq, const Point3d &a,
+                                  const Point3d &b, const Point3d &c, const Point3d &n, double clearance)
+{
+    if ((hp > clearance && hq > clearance) || (hp < -clearance && hq < -clearance)) return false;
+    const int axis = DominantAxis(n);
+    const std::array<Point2d, 3> t = {DropAxis(a, axis), DropAxis(b, axis), DropAxis(c, axis)};
+    if ((std::abs(hp) <= clearance && PointInTriangle2d(DropAxis(p, axis), t)) ||
+        (std::abs(hq) <= clearance && PointInTriangle2d(DropAxis(q, axis), t)))
+        return true;
+    return SegmentsCloser(p, q, a, b, clearance) || SegmentsCloser(p, q, b, c, clearance) ||
+           SegmentsCloser(p, q, c, a, clearance);
+}
+
+/// Whether triangles f and g of `P`, which do not meet, come within `clearance` (> 0) of each
+/// other: their distance is that of a corner of one whose projection falls in the other, or of
+/// two of their edges. hOverF: heights of g's corners over f's plane (unit normal nf); hOverG
+/// the other way.
+inline bool TrianglesCloser(const std::vector<Point3d> &P, const std::array<int, 3> &tf, const std::array<int, 3> &tg,
+                            const Point3d &nf, const Point3d &ng, const double *hOverF, const double *hOverG,
+                            double clearance)
+{
+    if (clearance <= 0) return false;
+    auto cornerCloser = [&](const std::array<int, 3> &from, const double *heights, const std::array<int, 3> &to,
+                            const Point3d &n) {
+        const int axis = DominantAxis(n);
+        const std::array<Point2d, 3> t = {DropAxis(P[to[0]], axis), DropAxis(P[to[1]], axis), DropAxis(P[to[2]], axis)};
+        for (int i = 0; i < 3; ++i)
+            if (std::abs(heights[i]) <= clearance && PointInTriangle2d(DropAxis(P[from[i]], axis), t)) return true;
+        return false;
+    };
+    if (cornerCloser(tf, hOverG, tg, ng) || cornerCloser(tg, hOverF, tf, nf)) return true;
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j)
+            if (SegmentsCloser(P[tf[i]], P[tf[(i + 1) % 3]], P[tg[j]], P[tg[(j + 1) % 3]], clearance)) return true;
+    return false;
+}
+
 /// What FacesIntersect needs of each face, computed once however many pairs it is in.
 struct FaceShape
 {
@@ -195,7 +279,13 @@ inline bool CornersBefore(const IndexedMesh &im, int f, int g)
 /// their common corners do not intersect. `shape` is ShapeOfFace of every face. The answer
 /// depends on the two triangles only, not on their numbering or the order of f and g (the
 /// tests below are not symmetric in rounding): FindDefects reuses it for a later pass.
-inline bool FacesIntersect(const IndexedMesh &im, const std::vector<FaceShape> &shape, int f, int g)
+/// With a `clearance` > 0, faces that come closer than it to each other beyond their shared
+/// corners count as meeting too, as they could once each corner moves by half of it (see
+/// SavedCoordinateClearance): disjoint faces closer than that; faces on one corner where the
+/// edge opposite it on one face comes that close to the other face; faces on an edge whose
+/// other corners lie within that of the same half-plane (folded flat onto each other).
+inline bool FacesIntersect(const IndexedMesh &im, const std::vector<FaceShape> &shape, int f, int g,
+                           double clearance = 0)
 {
     if (CornersBefore(im, g, f)) std::swap(f, g);
     const auto &tf = im.faces[f], &tg = im.faces[g];
@@ -224,11 +314,13 @@ inline bool FacesIntersect(const IndexedMesh &im, const std::vector<FaceShape> &
     if (shared == 0) {
         const double onPlane = 1e-12 * longest;
         // Most pairs a grid offers lie with one face wholly on one side of the other's plane.
-        auto oneSide = [onPlane](const double *h) {
-            return (h[0] > onPlane && h[1] > onPlane && h[2] > onPlane) ||
-                   (h[0] < -onPlane && h[1] < -onPlane && h[2] < -onPlane);
+        auto oneSide = [](const double *h, double margin) {
+            return (h[0] > margin && h[1] > margin && h[2] > margin) ||
+                   (h[0] < -margin && h[1] < -margin && h[2] < -margin);
         };
-        if (oneSide(overF) || oneSide(overG)) return false;
+        if (oneSide(overF, onPlane) || oneSide(overG, onPlane))  // apart, unless within the clearance
+            return !oneSide(overF, clearance) && !oneSide(overG, clearance) &&
+                   TrianglesCloser(P, tf, tg, nf, ng, overF, overG, clearance);
         bool coplanar = true;
         for (int j = 0; j < 3; ++j) coplanar &= std::abs(overF[j]) <= onPlane;
         if (!coplanar) {
@@ -239,7 +331,7 @@ inline bool FacesIntersect(const IndexedMesh &im, const std::vector<FaceShape> &
                     SegmentMeetsTriangle(P[tg[i]], P[tg[k]], overF[i], overF[k], a, b, c, nf, onPlane))
                     return true;
             }
-            return false;
+            return TrianglesCloser(P, tf, tg, nf, ng, overF, overG, clearance);
         }
         std::array<Point2d, 3> f2, g2;
         for (int i = 0; i < 3; ++i) {
@@ -249,16 +341,19 @@ inline bool FacesIntersect(const IndexedMesh &im, const std::vector<FaceShape> &
         for (int i = 0; i < 3; ++i)
             for (int j = 0; j < 3; ++j)
                 if (SegmentsMeet2d(f2[i], f2[(i + 1) % 3], g2[j], g2[(j + 1) % 3])) return true;
-        return PointInTriangle2d(f2[0], g2) || PointInTriangle2d(g2[0], f2);
+        return PointInTriangle2d(f2[0], g2) || PointInTriangle2d(g2[0], f2) ||
+               TrianglesCloser(P, tf, tg, nf, ng, overF, overG, clearance);
     }
     if (shared == 2) {
         // Faces sharing an edge meet beyond it only when folded flat onto each other: the
-        // directions from the edge to the two opposite vertices (nearly) coincide.
+        // directions from the edge to the two opposite vertices (nearly) coincide, or one
+        // opposite vertex lies within the clearance of the other face's half-plane.
         const Point3d hinge0 = P[tf[sharedF[0]]], hinge = (P[tf[sharedF[1]]] - hinge0).Normalize();
         const Point3d c3 = P[tf[3 - sharedF[0] - sharedF[1]]] - hinge0;
         const Point3d d3 = P[tg[3 - sharedG[0] - sharedG[1]]] - hinge0;
         const Point3d uc = c3 - hinge * (c3 * hinge), ud = d3 - hinge * (d3 * hinge);
-        return uc * ud > 0 && (uc ^ ud).Norm() <= 1e-6 * uc.Norm() * ud.Norm();
+        const double across = (uc ^ ud).Norm(), lc = uc.Norm(), ld = ud.Norm();
+        return uc * ud > 0 && (across <= 1e-6 * lc * ld || across <= clearance * std::max(lc, ld));
     }
     // Sharing one vertex p. Both faces lie in their sectors at p, so if their projections on
     // f's plane have disjoint sectors they cannot meet beyond p; when g is (nearly) in f's
@@ -277,9 +372,39 @@ inline bool FacesIntersect(const IndexedMesh &im, const std::vector<FaceShape> &
     }
     const double onPlane = 1e-12 * longest;
     const int i1 = (i0 + 1) % 3, i2 = (i0 + 2) % 3, j1 = (j0 + 1) % 3, j2 = (j0 + 2) % 3;
-    return SegmentMeetsTriangle(P[tf[i1]], P[tf[i2]], overG[i1], overG[i2], P[tg[0]], P[tg[1]], P[tg[2]], ng,
-                                onPlane) ||
-           SegmentMeetsTriangle(P[tg[j1]], P[tg[j2]], overF[j1], overF[j2], a, b, c, nf, onPlane);
+    if (SegmentMeetsTriangle(P[tf[i1]], P[tf[i2]], overG[i1], overG[i2], P[tg[0]], P[tg[1]], P[tg[2]], ng,
+                             onPlane) ||
+        SegmentMeetsTriangle(P[tg[j1]], P[tg[j2]], overF[j1], overF[j2], a, b, c, nf, onPlane))
+        return true;
+    if (clearance <= 0) return false;
+    return SegmentTriangleCloser(P[tf[i1]], P[tf[i2]], overG[i1], overG[i2], P[tg[0]], P[tg[1]], P[tg[2]], ng,
+                                 clearance) ||
+           SegmentTriangleCloser(P[tg[j1]], P[tg[j2]], overF[j1], overF[j2], a, b, c, nf, clearance);
+}
+
+/// How close two faces of a mesh with these vertex positions may come beyond their shared
+/// corners: at most this apart, they could meet once the mesh is saved as text and read back.
+/// Text formats write a coordinate of type Scalar with io::Precision<Scalar>::digits()
+/// significant digits (OFF, PLY, STL; 7 for float); a reader in double gets that decimal back,
+/// one in Scalar the Scalar nearest to it. Each coordinate moves by up to half a unit of its
+/// last digit plus half a unit in the last place of the Scalar, both at most those of the
+/// largest coordinate, and each corner by sqrt(3) times that; twice that is the clearance
+/// (cheese at k=20, farthest: 6 pairs of faces 1e-8 apart in float met as read back in double
+/// from OFF). At most 1e-5 of the bounding-box diagonal, so that a mesh far from the origin
+/// (where its files lose most of their precision) is not taken for one whose faces all touch.
+template <class Scalar>
+double SavedCoordinateClearance(const std::vector<Point3d> &positions)
+{
+    Box3d box;
+    double largest = 0;
+    for (const Point3d &p : positions) {
+        box.Add(p);
+        for (int i = 0; i < 3; ++i) largest = std::max(largest, std::abs(p[i]));
+    }
+    if (!(largest > 0)) return 0;
+    const double lastDigit = std::pow(10.0, std::floor(std::log10(largest)) + 1 - io::Precision<Scalar>::digits());
+    const double perCoordinate = 0.5 * lastDigit + 0.5 * double(std::numeric_limits<Scalar>::epsilon()) * largest;
+    return std::min(2 * std::sqrt(3.0) * perCoordinate, 1e-5 * box.Diag());
 }
 
 /// Same criterion as BuildIndexedMesh's degenerate count; such faces have no plane to test.
@@ -308,12 +433,13 @@ inline std::vector<FaceShape> ShapesOfFaces(const IndexedMesh &im, const std::ve
     return shape;
 }
 
-/// Calls met(g) for each face g in `grid` (built on `im`) that face f intersects (see
-/// FacesIntersect), except f itself and the faces `skip(g)` leaves out. `metFrom` (one entry
-/// per face, never f before) records each g met from f, so that it is tested once.
+/// Calls met(g) for each face g in `grid` (built on `im` with a margin of half the clearance)
+/// that face f intersects, or comes within `clearance` of (see FacesIntersect), except f itself
+/// and the faces `skip(g)` leaves out. `metFrom` (one entry per face, never f before) records
+/// each g met from f, so that it is tested once.
 template <class Skip, class Met>
 void ForEachIntersectingFace(const IndexedMesh &im, const std::vector<FaceShape> &shape, const SurfaceGrid &grid,
-                             int f, std::vector<int> &metFrom, Skip skip, Met met)
+                             int f, std::vector<int> &metFrom, Skip skip, Met met, double clearance = 0)
 {
     grid.ForEachCellOfFace(f, [&](size_t cell) {
         const auto [first, last] = grid.FacesIn(cell);
@@ -321,26 +447,27 @@ void ForEachIntersectingFace(const IndexedMesh &im, const std::vector<FaceShape>
             const int g = *other;
             if (g == f || skip(g) || metFrom[g] == f) continue;
             metFrom[g] = f;
-            if (BoxesTouch(grid.FaceBox(f), grid.FaceBox(g)) && FacesIntersect(im, shape, f, g)) met(g);
+            if (BoxesTouch(grid.FaceBox(f), grid.FaceBox(g)) && FacesIntersect(im, shape, f, g, clearance)) met(g);
         }
     });
 }
 
 /// Pairs (f < g) of faces not flagged in `degenerate` (DegenerateFaceMask) that intersect
-/// beyond their shared corners, sorted; only pairs with a face flagged in `fresh` when it is
-/// not empty (the pairs of the other faces are known). Needs only `faces` and `positions`.
+/// beyond their shared corners, or come within `clearance` of each other there (see
+/// FacesIntersect), sorted; only pairs with a face flagged in `fresh` when it is not empty (the
+/// pairs of the other faces are known). Needs only `faces` and `positions`.
 /// The fresh faces go in a SurfaceGrid, and every face meets the fresh faces of its grid
 /// cells there, each once; a pair of fresh faces is tested from its lower face only. After a
 /// repair few faces are fresh, and a grid of those alone is cheap to build.
 inline std::vector<std::pair<int, int>> SelfIntersectingPairs(const IndexedMesh &im,
                                                               const std::vector<char> &degenerate,
-                                                              const std::vector<char> &fresh)
+                                                              const std::vector<char> &fresh, double clearance = 0)
 {
     const int faceCount = im.FaceCount();
     auto isFresh = [&](int f) { return fresh.empty() || fresh[f]; };
     std::vector<char> outOfGrid(faceCount);
     for (int f = 0; f < faceCount; ++f) outOfGrid[f] = degenerate[f] || !isFresh(f);
-    const SurfaceGrid grid(im.positions, im.faces, outOfGrid);
+    const SurfaceGrid grid(im.positions, im.faces, outOfGrid, clearance / 2);
     const std::vector<FaceShape> shape = ShapesOfFaces(im, degenerate);
     std::vector<int> metFrom(faceCount, -1);
     std::vector<std::pair<int, int>> pairs;
@@ -349,7 +476,7 @@ inline std::vector<std::pair<int, int>> SelfIntersectingPairs(const IndexedMesh 
         const bool freshF = isFresh(f);
         ForEachIntersectingFace(
             im, shape, grid, f, metFrom, [&](int g) { return freshF && g < f; },
-            [&](int g) { pairs.emplace_back(std::min(f, g), std::max(f, g)); });
+            [&](int g) { pairs.emplace_back(std::min(f, g), std::max(f, g)); }, clearance);
     }
     std::sort(pairs.begin(), pairs.end());
     return pairs;

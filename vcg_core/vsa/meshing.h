@@ -112,6 +112,10 @@ struct MeshingReport
     int repairRounds = 0;           ///< the output's pass, counting the first one as 0
     int passes = 0;                 ///< passes run, the first one included: the cost of the repairs
     int steinerVertices = 0;
+    /// Face pairs of the output that do not meet but come closer than its files keep them apart
+    /// (see detail::SavedCoordinateClearance): saved as text and read back, they may. Counted
+    /// with the repair (repairRounds > 0) only.
+    int closePairs = 0;
 
     int ignoredFaces = 0;   ///< input faces with a repeated vertex (no area)
     int splitVertices = 0;  ///< extra output-side vertices from splitting non-manifold input vertices
@@ -148,6 +152,7 @@ struct MeshingReport
         if (ignoredFaces) s << "; " << ignoredFaces << " input faces with a repeated vertex ignored";
         if (splitVertices) s << "; non-manifold input vertices split into " << splitVertices << " extra vertices";
         s << ". Output: " << validity.Summary();
+        if (closePairs) s << ", " << closePairs << " face pairs closer than its text files keep apart";
         return s.str();
     }
 };
@@ -391,22 +396,29 @@ MeshingPass RunMeshingPass(const MeshingSurface &s, const std::vector<Proxy> &pr
 /// polygon is not simple, and its triangulation folds, even where no face pair intersects).
 struct PassDefects
 {
-    std::vector<std::pair<int, int>> intersections;  ///< output face pairs
+    std::vector<std::pair<int, int>> intersections;  ///< output face pairs that meet
+    /// Output face pairs that do not meet but come closer than the clearance (see FindDefects):
+    /// they may meet once the output is saved as text and read back.
+    std::vector<std::pair<int, int>> closePairs;
     struct Crossing
     {
         int cell, edge, otherEdge;  ///< polygon edge k joins polygon vertices k and k + 1
     };
     std::vector<Crossing> crossings;
     std::vector<char> degenerate;  ///< per face of the pass's output: DegenerateFaceMask
-    size_t Count() const { return intersections.size() + crossings.size(); }
+    size_t Count() const { return intersections.size() + closePairs.size() + crossings.size(); }
+    /// Whether some faces meet or come too close: what halving, keeping input faces and carving
+    /// work against.
+    bool HasPairs() const { return !intersections.empty() || !closePairs.empty(); }
+    /// Orders outputs by their pairs: fewer that meet, then fewer close ones.
+    std::pair<size_t, size_t> PairRank() const { return {intersections.size(), closePairs.size()}; }
     /// Ranks passes: fewer intersecting pairs first, as they stay in the output (a crossing
     /// is where a fold may start, and the triangulation often avoids it: boeing at k=50 had
     /// one pass with 556 crossings and no intersection, and one with 171 and 384), then fewer
-    /// defects in all.
+    /// close pairs, then fewer defects in all.
     bool BetterThan(const PassDefects &other) const
     {
-        if (intersections.size() != other.intersections.size())
-            return intersections.size() < other.intersections.size();
+        if (PairRank() != other.PairRank()) return PairRank() < other.PairRank();
         return Count() < other.Count();
     }
 };
@@ -447,10 +459,11 @@ inline std::vector<int> RepeatedFaces(const MeshingPass &pass, const std::vector
     return repeats;
 }
 
-/// The defects of `pass`; given the pass it was derived from and its defects, only the pairs
-/// with a face that is not a repeat of that pass are tested (see RepeatedFaces), and only the
-/// cells whose polygon changed are searched for crossings.
-inline PassDefects FindDefects(const MeshingPass &pass, const MeshingPass *previous = nullptr,
+/// The defects of `pass`, with the face pairs that come closer than `clearance` without meeting
+/// (see FacesIntersect) apart; given the pass it was derived from and its defects, only the
+/// pairs with a face that is not a repeat of that pass are tested (see RepeatedFaces), and only
+/// the cells whose polygon changed are searched for crossings.
+inline PassDefects FindDefects(const MeshingPass &pass, double clearance, const MeshingPass *previous = nullptr,
                                const PassDefects *previousDefects = nullptr)
 {
     PassDefects defects;
@@ -458,6 +471,7 @@ inline PassDefects FindDefects(const MeshingPass &pass, const MeshingPass *previ
     output.positions = pass.positions;
     output.faces = pass.triangles;
     defects.degenerate = DegenerateFaceMask(output);
+    std::vector<std::pair<int, int>> pairs;  // meeting or close
     if (previous) {
         const std::vector<int> repeats =
             RepeatedFaces(pass, defects.degenerate, *previous, previousDefects->degenerate);
@@ -467,13 +481,22 @@ inline PassDefects FindDefects(const MeshingPass &pass, const MeshingPass *previ
             fresh[f] = repeats[f] < 0;
             if (repeats[f] >= 0) repeatOf[repeats[f]] = int(f);
         }
-        defects.intersections = SelfIntersectingPairs(output, defects.degenerate, fresh);
-        for (const auto &[f, g] : previousDefects->intersections)
-            if (repeatOf[f] >= 0 && repeatOf[g] >= 0)
-                defects.intersections.emplace_back(std::minmax(repeatOf[f], repeatOf[g]));
-        std::sort(defects.intersections.begin(), defects.intersections.end());
+        pairs = SelfIntersectingPairs(output, defects.degenerate, fresh, clearance);
+        for (const auto *known : {&previousDefects->intersections, &previousDefects->closePairs})
+            for (const auto &[f, g] : *known)
+                if (repeatOf[f] >= 0 && repeatOf[g] >= 0) pairs.emplace_back(std::minmax(repeatOf[f], repeatOf[g]));
+        std::sort(pairs.begin(), pairs.end());
     } else {
-        defects.intersections = SelfIntersectingPairs(output, defects.degenerate, {});
+        pairs = SelfIntersectingPairs(output, defects.degenerate, {}, clearance);
+    }
+    if (clearance > 0) {
+        std::vector<FaceShape> shape(output.faces.size());
+        for (const auto &[f, g] : pairs) shape[f] = ShapeOfFace(output, f), shape[g] = ShapeOfFace(output, g);
+        for (const auto &fg : pairs)
+            (FacesIntersect(output, shape, fg.first, fg.second) ? defects.intersections : defects.closePairs)
+                .push_back(fg);
+    } else {
+        defects.intersections = std::move(pairs);
     }
     // A cell with the polygon (SamePolygon) and the plane it had in `previous` has the crossings
     // it had there (they come in cell order).
@@ -517,8 +540,8 @@ inline std::pair<int, double> ChainSplit(const MeshingSurface &s, const MeshingP
 /// an anchor each, at their chain's farthest vertex. On each face of an intersecting pair,
 /// the chord-edge whose chain strays farthest relative to its length (or the first chain of
 /// the cell's polygon with a vertex to spare, when none of the face's chords has one) gets one
-/// too, and the face's anchors are pinned to their input vertices. Returns how many anchors
-/// were added or pinned.
+/// too, and the face's anchors are pinned to their input vertices; so do the faces of close
+/// pairs. Returns how many anchors were added or pinned.
 inline int RespondToDefects(const MeshingSurface &s, const MeshingPass &pass, const PassDefects &defects,
                             std::vector<char> &requiredAnchors, std::vector<char> &pinnedAnchors)
 {
@@ -537,7 +560,8 @@ inline int RespondToDefects(const MeshingSurface &s, const MeshingPass &pass, co
         }
 
     std::vector<int> offending;
-    for (const auto &[f, g] : defects.intersections) offending.push_back(f), offending.push_back(g);
+    for (const auto *pairs : {&defects.intersections, &defects.closePairs})
+        for (const auto &[f, g] : *pairs) offending.push_back(f), offending.push_back(g);
     std::sort(offending.begin(), offending.end());
     offending.erase(std::unique(offending.begin(), offending.end()), offending.end());
     // Per output vertex, its position in the polygon of the cell at hand, and that cell's first
@@ -582,16 +606,18 @@ inline int RespondToDefects(const MeshingSurface &s, const MeshingPass &pass, co
     return changes;
 }
 
-/// Per cell of `pass`: whether one of its faces intersects another.
+/// Per cell of `pass`: whether one of its faces intersects another, or comes too close to it
+/// (a close pair).
 inline std::vector<char> CellsOfIntersectingFaces(const MeshingSurface &s, const MeshingPass &pass,
                                                   const PassDefects &defects)
 {
     std::vector<char> flagged(s.CellCount(), 0);
-    for (const auto &[f, g] : defects.intersections) flagged[pass.triangleCell[f]] = flagged[pass.triangleCell[g]] = 1;
+    for (const auto *pairs : {&defects.intersections, &defects.closePairs})
+        for (const auto &[f, g] : *pairs) flagged[pass.triangleCell[f]] = flagged[pass.triangleCell[g]] = 1;
     return flagged;
 }
 
-/// Where to carve pieces (CarveCells) against the intersecting pairs of `pass`: for each face of
+/// Where to carve pieces (CarveCells) against the intersecting and close pairs of `pass`: for each face of
 /// a pair whose cell is triangulated (not kept as input faces) and not flagged in `excluded`,
 /// the input face of that cell whose centroid is nearest to the other face of the pair. There
 /// the cell's input passes closest to what its flat triangle cuts through.
@@ -617,10 +643,11 @@ inline std::vector<int> CarvingSeeds(const MeshingSurface &s, const MeshingPass 
         }
         if (nearest >= 0) seeds.push_back(nearest);
     };
-    for (const auto &[f, g] : defects.intersections) {
-        seedFor(f, g);
-        seedFor(g, f);
-    }
+    for (const auto *pairs : {&defects.intersections, &defects.closePairs})
+        for (const auto &[f, g] : *pairs) {
+            seedFor(f, g);
+            seedFor(g, f);
+        }
     return seeds;
 }
 
@@ -759,15 +786,18 @@ public:
         std::vector<char> requiredAnchors, pinnedAnchors;  ///< per surface vertex
     };
 
-    /// `proxies`: UsableProxies; `chordDeviationBound`: ChordDeviationBound; `gapTest`: on
+    /// `proxies`: UsableProxies; `chordDeviationBound`: ChordDeviationBound; `clearance`:
+    /// SavedCoordinateClearance of the output's scalar; `gapTest`: on
     /// `s`'s faces, or nullptr to leave the gap test out (chordGapThreshold 0). All three depend
     /// on the regions only, not on how they are cut into cells. `earlier`: the mesher of the
     /// surface `s` was split from (halved or carved), whose floodings its cells can update, or
     /// nullptr.
     CellMesher(const MeshingSurface &s, const std::vector<Proxy> &proxies, double chordDeviationBound,
-               const MeshingParam &param, ChordGapTest *gapTest, InputIntersections &inputIntersections, int &passes,
-               vcg::CallBackPos *cb, const CellMesher *earlier = nullptr)
-        : s_(s), proxies_(proxies), param_(param), inputIntersections_(inputIntersections), passes_(passes), cb_(cb),
+               const MeshingParam &param, double clearance, ChordGapTest *gapTest,
+               InputIntersections &inputIntersections, int &passes, vcg::CallBackPos *cb,
+               const CellMesher *earlier = nullptr)
+        : s_(s), proxies_(proxies), param_(param), clearance_(clearance), inputIntersections_(inputIntersections),
+          passes_(passes), cb_(cb),
           subdivision_(s, proxies_, param.chordThreshold, chordDeviationBound, gapTest),
           requiredAnchors_(s.VertexCount(), 0), pinnedAnchors_(s.VertexCount(), 0), inputCells_(s.CellCount(), 0),
           flooding_(earlier ? CellFlooding(s, earlier->flooding_) : CellFlooding(s))
@@ -784,7 +814,7 @@ public:
     {
         if (cb_) cb_(20, "VSA meshing: anchors and triangulation");
         best_.pass = RunPass(nullptr);
-        if (param_.repairRounds > 0) best_.defects = FindDefects(best_.pass);
+        if (param_.repairRounds > 0) best_.defects = FindDefects(best_.pass, clearance_);
         best_.requiredAnchors = requiredAnchors_;
         best_.pinnedAnchors = pinnedAnchors_;
         defects_ = best_.defects;
@@ -796,7 +826,7 @@ public:
             const MeshingPass &previous = round_ == 1 ? best_.pass : latest_;  // latest_: none yet
             if (RespondToDefects(s_, previous, defects_, requiredAnchors_, pinnedAnchors_) == 0) break;
             MeshingPass next = RunPass(&previous);
-            defects_ = FindDefects(next, &previous, &defects_);
+            defects_ = FindDefects(next, clearance_, &previous, &defects_);
             latest_ = std::move(next);
             if (defects_.BetterThan(best_.defects)) KeepLatest(round_);
         }
@@ -809,14 +839,14 @@ public:
     /// fewer intersecting pairs within `faceBudget` output faces.
     void KeepInputFaces(double faceBudget)
     {
-        if (best_.defects.intersections.empty() || FacesKeepingInput(s_, best_.pass, best_.defects) > faceBudget)
+        if (!best_.defects.HasPairs() || FacesKeepingInput(s_, best_.pass, best_.defects) > faceBudget)
             return;
-        size_t fewestIntersections = best_.defects.intersections.size();
+        std::pair<size_t, size_t> fewestPairs = best_.defects.PairRank();
         latest_ = best_.pass;
         defects_ = best_.defects;
         requiredAnchors_ = best_.requiredAnchors;
         pinnedAnchors_ = best_.pinnedAnchors;
-        for (int last = round_ + param_.repairRounds; round_ < last && !defects_.intersections.empty(); ++round_) {
+        for (int last = round_ + param_.repairRounds; round_ < last && defects_.HasPairs(); ++round_) {
             if (cb_) cb_(Progress(), "VSA meshing: keeping input faces against self-intersections");
             const std::vector<char> flagged = CellsOfIntersectingFaces(s_, latest_, defects_);
             std::vector<char> excluded = inputIntersections_.CellsAmong(s_, flagged);
@@ -826,10 +856,10 @@ public:
                 break;
             MeshingPass next = RunPass(&latest_);
             if (double(next.triangles.size()) > faceBudget) break;  // and it only grows
-            defects_ = FindDefects(next, &latest_, &defects_);
+            defects_ = FindDefects(next, clearance_, &latest_, &defects_);
             latest_ = std::move(next);
-            if (defects_.intersections.size() < fewestIntersections) {
-                fewestIntersections = defects_.intersections.size();
+            if (defects_.PairRank() < fewestPairs) {
+                fewestPairs = defects_.PairRank();
                 KeepLatest(round_);
             }
         }
@@ -839,6 +869,7 @@ private:
     const MeshingSurface &s_;
     const std::vector<Proxy> &proxies_;
     const MeshingParam &param_;
+    double clearance_;  ///< output faces closer than this make a close pair (see FindDefects)
     InputIntersections &inputIntersections_;
     int &passes_;
     vcg::CallBackPos *cb_;
@@ -851,6 +882,7 @@ private:
     int round_ = 1;        ///< the next round
 
     int Progress() const { return 20 + 50 * round_ / (2 * param_.repairRounds + 1); }
+
 
     /// The last pass becomes the best, from repair round `round`.
     void KeepLatest(int round)
@@ -918,6 +950,8 @@ MeshingReport BuildApproximatingMesh(const IndexedMesh &in, const Partition &par
     std::vector<int> regionCells(regionCount, 0);  // before any halving (see regionsCut)
     for (int r : surface->cellRegion) ++regionCells[r];
     detail::InputIntersections inputIntersections(in);
+    // Output faces closer than this are repaired as if they met: they may, once saved as text.
+    const double clearance = detail::SavedCoordinateClearance<typename OutMeshType::ScalarType>(in.positions);
     // Halving changes cells only, not faces or regions: the planes, the chord deviation bound and
     // the gap test's grid serve every surface.
     const std::vector<Proxy> proxies = detail::UsableProxies(*surface, partition.proxies);
@@ -925,7 +959,7 @@ MeshingReport BuildApproximatingMesh(const IndexedMesh &in, const Partition &par
     detail::ChordGapTest gapTest(surface->positions, surface->faces, param.chordGapThreshold);
     using Mesher = detail::CellMesher<CoordType>;
     auto mesherOf = [&](const MeshingSurface &cells, vcg::CallBackPos *progress, const Mesher *earlier) {
-        return std::make_unique<Mesher>(cells, proxies, chordDeviationBound, param,
+        return std::make_unique<Mesher>(cells, proxies, chordDeviationBound, param, clearance,
                                          param.chordGapThreshold > 0 ? &gapTest : nullptr, inputIntersections,
                                          report.passes, progress, earlier);
     };
@@ -946,7 +980,7 @@ MeshingReport BuildApproximatingMesh(const IndexedMesh &in, const Partition &par
     // and meshed again, each round from the one before; the output comes from the round with the
     // fewest intersecting pairs (the earliest on ties), and keeps input faces only if that still
     // leaves some: halves stay polygons of the regions, input faces do not.
-    if (param.halvingRounds > 0 && !best->Best().defects.intersections.empty()) {
+    if (param.halvingRounds > 0 && best->Best().defects.HasPairs()) {
         std::shared_ptr<MeshingSurface> latest = surface;
         std::unique_ptr<Mesher> latestAttempt;  // the mesher of `latest`, unless it is the best
         std::vector<char> flagged = detail::CellsOfIntersectingFaces(*latest, best->Best().pass, best->Best().defects);
@@ -969,7 +1003,7 @@ MeshingReport BuildApproximatingMesh(const IndexedMesh &in, const Partition &par
             flagged = detail::CellsOfIntersectingFaces(*halved, attempt->Best().pass, defects);
             latestAttempt.reset();  // before its surface goes
             latest = halved;
-            if (defects.intersections.size() < best->Best().defects.intersections.size()) {
+            if (defects.PairRank() < best->Best().defects.PairRank()) {
                 best = std::move(attempt);
                 bestSurface = halved;
                 report.halvingRounds = round;
@@ -977,8 +1011,11 @@ MeshingReport BuildApproximatingMesh(const IndexedMesh &in, const Partition &par
             } else {
                 latestAttempt = std::move(attempt);
             }
-            if (best->Best().defects.intersections.empty() ||
-                (inputIntersectsThere && round - report.halvingRounds >= detail::kHalvingPatience))
+            // Close pairs alone get the same patience as pairs where the input meets itself: they
+            // often come from the input's own vertices (two of its faces folded onto each other).
+            const bool onlyCloseLeft = best->Best().defects.intersections.empty();
+            if (!best->Best().defects.HasPairs() || ((inputIntersectsThere || onlyCloseLeft) &&
+                                                     round - report.halvingRounds >= detail::kHalvingPatience))
                 break;
         }
     }
@@ -994,7 +1031,7 @@ MeshingReport BuildApproximatingMesh(const IndexedMesh &in, const Partition &par
         std::unique_ptr<Mesher> latestAttempt;  // the last round's, unless it became the best
         int carvedSoFar = 0;
         bool inputIntersectsThere = false;
-        for (int round = 1; round <= detail::kCarvingRounds && !best->Best().defects.intersections.empty(); ++round) {
+        for (int round = 1; round <= detail::kCarvingRounds && best->Best().defects.HasPairs(); ++round) {
             if (cb) cb(80, "VSA meshing: carving cells");
             const Mesher &latestMesher = latestAttempt ? *latestAttempt : *best;
             const detail::MeshingPass &pass = latestMesher.Best().pass;
@@ -1010,13 +1047,13 @@ MeshingReport BuildApproximatingMesh(const IndexedMesh &in, const Partition &par
             carvedSoFar += pieces;
             attempt->KeepInputFaces(faceBudget);
             latest = carved;
-            if (attempt->Best().defects.intersections.size() < best->Best().defects.intersections.size() &&
+            if (attempt->Best().defects.PairRank() < best->Best().defects.PairRank() &&
                 double(attempt->Best().pass.triangles.size()) <= faceBudget) {
                 best = std::move(attempt);
                 bestSurface = carved;
                 report.carvingRounds = round;
                 report.piecesCarved = carvedSoFar;
-            } else if (inputIntersectsThere) {
+            } else if (inputIntersectsThere || best->Best().defects.intersections.empty()) {
                 break;
             } else {
                 latestAttempt = std::move(attempt);
@@ -1084,8 +1121,10 @@ MeshingReport BuildApproximatingMesh(const IndexedMesh &in, const Partition &par
     const IndexedMesh written = BuildIndexedMesh(out, &diagnostics);
     const bool counted = param.repairRounds > 0 && detail::WritesPass(written, pass);
     report.validity = CheckMeshValidity(written, diagnostics, param.checkSelfIntersections && !counted);
-    if (param.checkSelfIntersections && counted)
+    if (param.checkSelfIntersections && counted) {
         report.validity.selfIntersections = int(passDefects.intersections.size());
+        report.closePairs = int(passDefects.closePairs.size());
+    }
     report.ok = true;
     if (cb) cb(100, "VSA meshing: done");
     return report;

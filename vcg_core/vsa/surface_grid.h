@@ -34,14 +34,17 @@ inline bool BoxesTouch(const Box3d &a, const Box3d &b)
 class SurfaceGrid
 {
 public:
-    /// Faces flagged in `skip` (empty, or one flag per face) stay out of the grid.
+    /// Faces flagged in `skip` (empty, or one flag per face) stay out of the grid. With a
+    /// `margin`, each face stands for the points within it of the face: its box and its cells
+    /// include them, so that faces closer than twice the margin share a cell and their boxes touch.
     SurfaceGrid(const std::vector<Point3d> &positions, const std::vector<std::array<int, 3>> &faces,
-                const std::vector<char> &skip = {})
-        : positions_(positions), faces_(faces), faceBox_(faces.size())
+                const std::vector<char> &skip = {}, double margin = 0)
+        : positions_(positions), faces_(faces), faceBox_(faces.size()), margin_(margin)
     {
         size_t inGrid = 0;
         for (size_t f = 0; f < faces.size(); ++f) {
             for (int v : faces[f]) faceBox_[f].Add(positions[v]);
+            if (margin > 0) faceBox_[f].Offset(margin);
             if (!skip.empty() && skip[f]) continue;
             box_.Add(faceBox_[f]);
             ++inGrid;
@@ -135,7 +138,7 @@ private:
             // rounding on a sliver): never miss a cell the face touches.
             reach = (std::abs(n[0]) * cellSize_[0] + std::abs(n[1]) * cellSize_[1] + std::abs(n[2]) * cellSize_[2]) *
                         (0.5 + 1e-6) +
-                    1e-10 * e1.Norm() * e2.Norm() * box_.Diag();
+                    1e-10 * e1.Norm() * e2.Norm() * box_.Diag() + margin_ * n.Norm();
         }
         for (int z = lo[2]; z <= hi[2]; ++z)
             for (int y = lo[1]; y <= hi[1]; ++y)
@@ -166,7 +169,8 @@ private:
 
     const std::vector<Point3d> &positions_;
     const std::vector<std::array<int, 3>> &faces_;
-    std::vector<Box3d> faceBox_;
+    std::vector<Box3d> faceBox_;  ///< grown by margin_
+    double margin_;
     Box3d box_;
     Point3i dim_{1, 1, 1};
     Point3d cellSize_{1, 1, 1};
