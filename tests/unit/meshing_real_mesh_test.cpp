@@ -218,6 +218,7 @@ TEST(MeshingRealMeshes, DefectsCarriedOverAreThoseFoundFromScratch)
         const detail::PassDefects carried = detail::FindDefects(next, clearance, &pass, &defects);
         const detail::PassDefects scratch = detail::FindDefects(next, clearance);
         EXPECT_EQ(carried.intersections, scratch.intersections) << "pass " << round + 1;
+        EXPECT_EQ(carried.closePairs, scratch.closePairs) << "pass " << round + 1;
         EXPECT_EQ(crossings(carried), crossings(scratch)) << "pass " << round + 1;
         EXPECT_GT(scratch.crossings.size(), 0u);
         intersections += scratch.intersections.size();

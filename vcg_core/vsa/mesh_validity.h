@@ -162,6 +162,8 @@ inline bool SectorsOverlap2d(Point2d u0, Point2d v0, Point2d u1, Point2d v1)
 }
 
 /// Distance between closed segments p0p1 and q0q1 (Ericson, Real-Time Collision Detection, 5.1.9).
+/// Not vcg's SegmentSegmentDistance: it clamps the two lines' closest points to their segments
+/// one at a time, and calls lines parallel below an absolute 1e-9.
 inline double SegmentsDistance(const Point3d &p0, const Point3d &p1, const Point3d &q0, const Point3d &q1)
 {
     const Point3d d1 = p1 - p0, d2 = q1 - q0, r = p0 - q0;

@@ -414,6 +414,13 @@ struct PassDefects
     bool HasPairs() const { return !intersections.empty() || !closePairs.empty(); }
     /// Orders outputs by their pairs: fewer that meet, then fewer close ones.
     std::pair<size_t, size_t> PairRank() const { return {intersections.size(), closePairs.size()}; }
+    /// Calls visit(f, g) for each intersecting pair, then each close pair.
+    template <class Visit>
+    void ForEachPair(Visit visit) const
+    {
+        for (const auto *pairs : {&intersections, &closePairs})
+            for (const auto &[f, g] : *pairs) visit(f, g);
+    }
     /// Ranks passes: fewer intersecting pairs first, as they stay in the output (a crossing
     /// is where a fold may start, and the triangulation often avoids it: boeing at k=50 had
     /// one pass with 556 crossings and no intersection, and one with 171 and 384), then fewer
@@ -473,32 +480,34 @@ inline PassDefects FindDefects(const MeshingPass &pass, double clearance, const 
     output.positions = pass.positions;
     output.faces = pass.triangles;
     defects.degenerate = DegenerateFaceMask(output);
-    std::vector<std::pair<int, int>> pairs;  // meeting or close
+    std::vector<char> fresh;  // all, without `previous`
+    std::vector<int> repeatOf;
     if (previous) {
         const std::vector<int> repeats =
             RepeatedFaces(pass, defects.degenerate, *previous, previousDefects->degenerate);
-        std::vector<char> fresh(repeats.size());
-        std::vector<int> repeatOf(previous->triangles.size(), -1);
+        fresh.resize(repeats.size());
+        repeatOf.assign(previous->triangles.size(), -1);
         for (size_t f = 0; f < repeats.size(); ++f) {
             fresh[f] = repeats[f] < 0;
             if (repeats[f] >= 0) repeatOf[repeats[f]] = int(f);
         }
-        pairs = SelfIntersectingPairs(output, defects.degenerate, fresh, clearance);
-        for (const auto *known : {&previousDefects->intersections, &previousDefects->closePairs})
-            for (const auto &[f, g] : *known)
-                if (repeatOf[f] >= 0 && repeatOf[g] >= 0) pairs.emplace_back(std::minmax(repeatOf[f], repeatOf[g]));
-        std::sort(pairs.begin(), pairs.end());
-    } else {
-        pairs = SelfIntersectingPairs(output, defects.degenerate, {}, clearance);
     }
-    if (clearance > 0) {
-        std::vector<FaceShape> shape(output.faces.size());
-        for (const auto &[f, g] : pairs) shape[f] = ShapeOfFace(output, f), shape[g] = ShapeOfFace(output, g);
-        for (const auto &fg : pairs)
-            (FacesIntersect(output, shape, fg.first, fg.second) ? defects.intersections : defects.closePairs)
-                .push_back(fg);
-    } else {
-        defects.intersections = std::move(pairs);
+    // Pairs found now meet or are close; the exact test tells which.
+    const std::vector<std::pair<int, int>> found = SelfIntersectingPairs(output, defects.degenerate, fresh, clearance);
+    std::vector<FaceShape> shape(clearance > 0 ? output.faces.size() : 0);
+    if (clearance > 0)
+        for (const auto &[f, g] : found) shape[f] = ShapeOfFace(output, f), shape[g] = ShapeOfFace(output, g);
+    for (const auto &[f, g] : found)
+        (clearance <= 0 || FacesIntersect(output, shape, f, g) ? defects.intersections : defects.closePairs)
+            .emplace_back(f, g);
+    if (previous) {  // a pair of repeated faces is as it was
+        auto carry = [&](const std::vector<std::pair<int, int>> &known, std::vector<std::pair<int, int>> &into) {
+            for (const auto &[f, g] : known)
+                if (repeatOf[f] >= 0 && repeatOf[g] >= 0) into.emplace_back(std::minmax(repeatOf[f], repeatOf[g]));
+            std::sort(into.begin(), into.end());
+        };
+        carry(previousDefects->intersections, defects.intersections);
+        carry(previousDefects->closePairs, defects.closePairs);
     }
     // A cell with the polygon (SamePolygon) and the plane it had in `previous` has the crossings
     // it had there (they come in cell order).
@@ -562,8 +571,7 @@ inline int RespondToDefects(const MeshingSurface &s, const MeshingPass &pass, co
         }
 
     std::vector<int> offending;
-    for (const auto *pairs : {&defects.intersections, &defects.closePairs})
-        for (const auto &[f, g] : *pairs) offending.push_back(f), offending.push_back(g);
+    defects.ForEachPair([&](int f, int g) { offending.push_back(f), offending.push_back(g); });
     std::sort(offending.begin(), offending.end());
     offending.erase(std::unique(offending.begin(), offending.end()), offending.end());
     // Per output vertex, its position in the polygon of the cell at hand, and that cell's first
@@ -614,15 +622,14 @@ inline std::vector<char> CellsOfIntersectingFaces(const MeshingSurface &s, const
                                                   const PassDefects &defects)
 {
     std::vector<char> flagged(s.CellCount(), 0);
-    for (const auto *pairs : {&defects.intersections, &defects.closePairs})
-        for (const auto &[f, g] : *pairs) flagged[pass.triangleCell[f]] = flagged[pass.triangleCell[g]] = 1;
+    defects.ForEachPair([&](int f, int g) { flagged[pass.triangleCell[f]] = flagged[pass.triangleCell[g]] = 1; });
     return flagged;
 }
 
-/// Where to carve pieces (CarveCells) against the intersecting and close pairs of `pass`: for each face of
-/// a pair whose cell is triangulated (not kept as input faces) and not flagged in `excluded`,
-/// the input face of that cell whose centroid is nearest to the other face of the pair. There
-/// the cell's input passes closest to what its flat triangle cuts through.
+/// Where to carve pieces (CarveCells) against the intersecting and close pairs of `pass`: for
+/// each face of a pair whose cell is triangulated (not kept as input faces) and not flagged in
+/// `excluded`, the input face of that cell whose centroid is nearest to the other face of the
+/// pair. There the cell's input passes closest to what its flat triangle cuts through.
 inline std::vector<int> CarvingSeeds(const MeshingSurface &s, const MeshingPass &pass, const PassDefects &defects,
                                      const std::vector<char> &excluded)
 {
@@ -645,11 +652,10 @@ inline std::vector<int> CarvingSeeds(const MeshingSurface &s, const MeshingPass 
         }
         if (nearest >= 0) seeds.push_back(nearest);
     };
-    for (const auto *pairs : {&defects.intersections, &defects.closePairs})
-        for (const auto &[f, g] : *pairs) {
-            seedFor(f, g);
-            seedFor(g, f);
-        }
+    defects.ForEachPair([&](int f, int g) {
+        seedFor(f, g);
+        seedFor(g, f);
+    });
     return seeds;
 }
 
@@ -884,7 +890,6 @@ private:
     int round_ = 1;        ///< the next round
 
     int Progress() const { return 20 + 50 * round_ / (2 * param_.repairRounds + 1); }
-
 
     /// The last pass becomes the best, from repair round `round`.
     void KeepLatest(int round)
