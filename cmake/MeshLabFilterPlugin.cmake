@@ -2,9 +2,10 @@
 #
 #   include(cmake/MeshLabFilterPlugin.cmake)
 #   vsa_import_meshlab_tree(<dir> <tag_var>)
-#       <dir>: a tree made by scripts/setup_filterplugin.sh (.deps/meshlab-modern/<ML_VERSION>, whose
-#       build/ is float, or one of its build directories, e.g. .../build-double), or the CMake build
-#       directory of any MeshLab 2022.02+ checkout in which meshlab-common was built.
+#       <dir>: a tree made by scripts/setup_filterplugin.sh (.deps/meshlab-modern/<ML_VERSION>, or
+#       its build/), the pymeshlab wheel's MeshLab described by scripts/setup_pymeshlab.sh
+#       (.deps/pymeshlab), or the CMake build directory of any MeshLab 2022.02+ checkout in which
+#       meshlab-common was built.
 #       Creates the imported target meshlab_fp_<tag>: libmeshlab-common with MeshLab's src/, its
 #       vcglib and Eigen as (system) include directories and the compile definitions the library
 #       was built with, MESHLAB_VERSION and MESHLAB_SCALAR. Every plugin must use exactly these:
@@ -13,8 +14,11 @@
 #       <tag> is MESHLAB_VERSION made identifier-safe: "2025_07" (float), "2025_07d" (double).
 #       The target carries the tree's facts as properties MESHLAB_FP_VERSION, MESHLAB_FP_SCALAR,
 #       MESHLAB_FP_SOURCE_DIR, MESHLAB_FP_VCGLIB_DIR, MESHLAB_FP_COMMON_LIBRARY,
-#       MESHLAB_FP_PLUGIN_DIR (MeshLab's own plugins built there: io_base, filter_measure) and
-#       MESHLAB_FP_ORIGIN (Debian version + tarball sha256, or the build directory).
+#       MESHLAB_FP_PLUGIN_DIR (MeshLab's own plugins there: io_base, filter_measure, ...),
+#       MESHLAB_FP_HOST ("meshlab": a MeshLab built here, which our own test host links to;
+#       "pymeshlab": the wheel's, loaded only by pymeshlab itself), MESHLAB_FP_PYTHON (pymeshlab's
+#       interpreter) and MESHLAB_FP_ORIGIN (Debian version + tarball sha256, the wheel, or the
+#       build directory).
 #   vsa_add_meshlab_filterplugin(<target> <tag> <sources...>)
 #       a Qt plugin MODULE (lib<target>.so, AUTOMOC) for that tree.
 #   vsa_add_meshlab_filterplugin_variant(<target> <tag> <version> <scalar> <sources...>)
@@ -32,7 +36,11 @@ function(_vsa_read_meshlab_tree dir)
   foreach(info "${dir}/meshlab-build-info.cmake" "${dir}/build/meshlab-build-info.cmake")
     if(EXISTS "${info}")
       include("${info}")
-      set(origin "Debian meshlab ${MESHLAB_FP_DEBIAN_VERSION}, tarball sha256 ${MESHLAB_FP_TARBALL_SHA256}")
+      if(DEFINED MESHLAB_FP_ORIGIN_TEXT)
+        set(origin "${MESHLAB_FP_ORIGIN_TEXT}")
+      else()
+        set(origin "Debian meshlab ${MESHLAB_FP_DEBIAN_VERSION}, tarball sha256 ${MESHLAB_FP_TARBALL_SHA256}")
+      endif()
       break()
     endif()
   endforeach()
@@ -67,7 +75,10 @@ function(_vsa_read_meshlab_tree dir)
                         "MESHLAB_SCALAR '${MESHLAB_FP_SCALAR}', library '${MESHLAB_FP_COMMON_LIBRARY}', "
                         "sources '${MESHLAB_FP_SOURCE_DIR}')")
   endif()
-  foreach(var VERSION SCALAR SOURCE_DIR VCGLIB_DIR COMMON_LIBRARY PLUGIN_DIR)
+  if(NOT DEFINED MESHLAB_FP_HOST)
+    set(MESHLAB_FP_HOST "meshlab")
+  endif()
+  foreach(var VERSION SCALAR SOURCE_DIR VCGLIB_DIR COMMON_LIBRARY PLUGIN_DIR HOST PYTHON)
     set(MESHLAB_FP_${var} "${MESHLAB_FP_${var}}" PARENT_SCOPE)
   endforeach()
   set(MESHLAB_FP_ORIGIN "${origin}" PARENT_SCOPE)
@@ -96,7 +107,7 @@ function(vsa_import_meshlab_tree dir tag_var)
     INTERFACE_INCLUDE_DIRECTORIES "${MESHLAB_FP_SOURCE_DIR};${MESHLAB_FP_VCGLIB_DIR}"
     INTERFACE_COMPILE_DEFINITIONS "MESHLAB_VERSION=${MESHLAB_FP_VERSION};MESHLAB_SCALAR=${MESHLAB_FP_SCALAR}"
     INTERFACE_LINK_LIBRARIES "Qt5::Core;Qt5::Gui;Qt5::Widgets;Qt5::OpenGL;Qt5::Xml;Qt5::Network;Eigen3::Eigen")
-  foreach(var VERSION SCALAR SOURCE_DIR VCGLIB_DIR COMMON_LIBRARY PLUGIN_DIR ORIGIN)
+  foreach(var VERSION SCALAR SOURCE_DIR VCGLIB_DIR COMMON_LIBRARY PLUGIN_DIR HOST PYTHON ORIGIN)
     set_property(TARGET ${target} PROPERTY MESHLAB_FP_${var} "${MESHLAB_FP_${var}}")
   endforeach()
   message(STATUS "MeshLab FilterPlugin API: ${MESHLAB_FP_VERSION} (${MESHLAB_FP_SCALAR}) from ${MESHLAB_FP_ORIGIN}: "

@@ -12,7 +12,7 @@ root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 mesh=$(realpath "${1:-$root/resources/meshes/fandisk.off}")
 script=$(realpath "${2:-$root/resources/scripts/vsa_hausdorff.mlx}")
 # The sample needs only the MeshLab 2020.09 plugin and its private prefix.
-VSA_FILTERPLUGIN_SCALARS=${VSA_FILTERPLUGIN_SCALARS:-none} bash "$root/scripts/build.sh" meshlab_prefix
+VSA_FILTERPLUGIN_HOSTS=${VSA_FILTERPLUGIN_HOSTS:-none} bash "$root/scripts/build.sh" meshlab_prefix
 
 out="$root/out"
 mkdir -p "$out"

@@ -7,9 +7,10 @@
 #    against the Sources index, which it checked against Debian's signed Release file
 #  - unpacked into .deps/meshlab-modern/<ML_VERSION>/src, and only `meshlab-common` plus two of
 #    MeshLab's own plugins (io_base: mesh I/O; filter_measure: a reference filter plugin) built
-#    into .deps/meshlab-modern/<ML_VERSION>/build (float) and build-double (double) (mini build,
-#    no optional external libraries),
-#    cached by the tarball's sha256 (build/.vsa-stamp): a second run only re-reads apt's index.
+#    into .deps/meshlab-modern/<ML_VERSION>/build in float, as MeshLab's own releases are (mini
+#    build, no optional external libraries), cached by the tarball's sha256 (build/.vsa-stamp): a
+#    second run only re-reads apt's index. pymeshlab's double-precision MeshLab is not built: the
+#    plugin for it links to the wheel's own library (scripts/setup_pymeshlab.sh).
 #  - .deps/meshlab-modern/current -> <ML_VERSION>; build/meshlab-build-info.cmake and
 #    build/meshlab-build-info.txt tell the MESHLAB_VERSION / MESHLAB_SCALAR the build used;
 #    cmake/MeshLabFilterPlugin.cmake reads the former (-DVSA_FILTERPLUGIN_MESHLAB_DIR=<build dir>).
@@ -17,9 +18,8 @@
 #   VSA_FILTERPLUGIN_OFFLINE=1     skip `apt-get update` (use the lists fetched last time)
 #   VSA_FILTERPLUGIN_VERSION=V     fetch meshlab=V instead of the newest (e.g. 2025.07~dfsg-4)
 #   VSA_FILTERPLUGIN_PLUGINS="io_base filter_measure"   MeshLab plugins to build with the library
-#   VSA_FILTERPLUGIN_SCALARS="float double"   (default) the float tree in build/ (MeshLab's own
-#                                  releases) and a double one in build-double (pymeshlab's precision;
-#                                  MESHLAB_VERSION gets a "d": 2025.07d); "float" or "double" for one
+#   VSA_FILTERPLUGIN_SOURCES_ONLY=1  fetch and unpack the sources (headers for the pymeshlab build),
+#                                  build nothing
 #   VSA_FILTERPLUGIN_JOBS=2        build parallelism (the machine is shared: 2 at most)
 set -euo pipefail
 t0=$(date +%s)
@@ -94,10 +94,9 @@ if [ "$(cat "$src/.vsa-tarball-sha256" 2>/dev/null)" != "$tar_sha" ]; then
   echo "$tar_sha" > "$src/.vsa-tarball-sha256"
 fi
 
-# build_tree SCALAR BUILD_DIR: meshlab-common (+ the chosen plugins) with that scalar type.
+# build_tree BUILD_DIR: meshlab-common (+ the chosen plugins) in float.
 build_tree() {
-  local scalar=$1 build=$2 double=OFF
-  [ "$scalar" = double ] && double=ON
+  local scalar=float build=$1
   local stamp_want="$tar_sha $deb_version scalar=$scalar plugins=$plugins_cmake"
   [ "$(cat "$build/.vsa-stamp" 2>/dev/null)" = "$stamp_want" ] && return 0
   echo "setup_filterplugin: building meshlab-common $ml_version ($scalar) from Debian meshlab $deb_version" \
@@ -107,7 +106,7 @@ build_tree() {
   local tb; tb=$(date +%s)
   cmake -S "$src" -B "$build" -G "Unix Makefiles" -DCMAKE_BUILD_TYPE=Release \
         -DMESHLAB_BUILD_MINI=ON -DMESHLAB_ALLOW_OPTIONAL_EXTERNAL_LIBRARIES=OFF \
-        -DMESHLAB_BUILD_ONLY_LIBRARIES=ON -DMESHLAB_BUILD_WITH_DOUBLE_SCALAR=$double \
+        -DMESHLAB_BUILD_ONLY_LIBRARIES=ON -DMESHLAB_BUILD_WITH_DOUBLE_SCALAR=OFF \
         -DMESHLAB_PLUGINS="$plugins_cmake" > "$build/vsa-configure.log" 2>&1 \
     || { tail -40 "$build/vsa-configure.log"; exit 1; }
   cmake --build "$build" -j "$jobs" --target meshlab-common "${ml_plugins[@]}" > "$build/vsa-build.log" 2>&1 \
@@ -145,24 +144,14 @@ EOF
   echo "$stamp_want" > "$build/.vsa-stamp"
 }
 
-# float: what MeshLab's own releases (2025.07) and Debian use; double: what pymeshlab bundles
-# (its MeshLab is built with MESHLAB_BUILD_WITH_DOUBLE_SCALAR=ON, version "2025.07d").
-read -r -a scalars <<< "${VSA_FILTERPLUGIN_SCALARS:-float double}"
-for scalar in "${scalars[@]}"; do
-  case $scalar in
-    float) build_tree float "$dir/build" ;;
-    double) build_tree double "$dir/build-double" ;;
-    *) echo "setup_filterplugin: unknown scalar type '$scalar' (float or double)" >&2; exit 1 ;;
-  esac
-done
 ln -sfn "$ml_version" "$modern/current"
+if [ "${VSA_FILTERPLUGIN_SOURCES_ONLY:-0}" = 1 ]; then
+  echo "setup_filterplugin: sources of MeshLab $ml_version (Debian meshlab $deb_version) in ${src#"$root"/}"
+  exit 0
+fi
+build_tree "$dir/build"
 
-# One line per tree (the details are in its meshlab-build-info.txt); pass the directory to CMake as
-# -DVSA_FILTERPLUGIN_MESHLAB_DIR=<dir>[;<dir>] (scripts/build.sh does).
-trees=()
-for scalar in "${scalars[@]}"; do
-  build="$modern/current/build"; [ "$scalar" = double ] && build="$modern/current/build-double"
-  trees+=("$(sed -n 's/^MESHLAB_VERSION=//p' "$build/meshlab-build-info.txt") ($scalar) in ${build#"$root"/}")
-done
-echo "setup_filterplugin: ready in $(( $(date +%s) - t0 )) s: MeshLab $(IFS=';'; echo "${trees[*]}" | sed 's/;/, /g')" \
+# Pass the directory to CMake as -DVSA_FILTERPLUGIN_MESHLAB_DIR=<dir> (scripts/build.sh does).
+echo "setup_filterplugin: ready in $(( $(date +%s) - t0 )) s: MeshLab" \
+     "$(sed -n 's/^MESHLAB_VERSION=//p' "$dir/build/meshlab-build-info.txt") (float) in ${dir#"$root"/}/build" \
      "from Debian meshlab $deb_version"
