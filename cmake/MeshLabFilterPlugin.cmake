@@ -118,7 +118,9 @@ endfunction()
 # A MeshLab FilterPlugin module: lib<target>.so, like MeshLab's own plugins.
 function(vsa_add_meshlab_filterplugin target tag)
   add_library(${target} MODULE ${ARGN})
-  set_target_properties(${target} PROPERTIES AUTOMOC ON PREFIX "lib")
+  # No run path: the host has loaded libmeshlab-common and Qt before it loads a plugin, and one
+  # pointing into this build tree (or at pymeshlab's .venv) has no place in a released plugin.
+  set_target_properties(${target} PROPERTIES AUTOMOC ON PREFIX "lib" SKIP_BUILD_RPATH ON)
   target_link_libraries(${target} PRIVATE meshlab_fp_${tag})
   # MeshLab builds its plugins with -Wl,--no-undefined: so do we, to catch missing symbols at
   # link time rather than at QPluginLoader time.
@@ -138,4 +140,32 @@ function(vsa_add_meshlab_filterplugin_variant target tag version scalar)
   target_compile_definitions(${target} PRIVATE MESHLAB_VERSION=${version} MESHLAB_SCALAR=${scalar})
   target_link_libraries(${target} PRIVATE "${lib}" Qt5::Core Qt5::Gui Qt5::Widgets Qt5::OpenGL Qt5::Xml
                         Qt5::Network Eigen3::Eigen)
+endfunction()
+
+# The tags of the FilterPlugin builds (VSA_FILTERPLUGIN_TAGS) whose MeshLab is <host>: "meshlab" or
+# "pymeshlab".
+function(vsa_filterplugin_tags_of_host host out_var)
+  get_property(tags GLOBAL PROPERTY VSA_FILTERPLUGIN_TAGS)
+  set(result "")
+  foreach(tag IN LISTS tags)
+    get_target_property(tag_host meshlab_fp_${tag} MESHLAB_FP_HOST)
+    if(tag_host STREQUAL host)
+      list(APPEND result ${tag})
+    endif()
+  endforeach()
+  set(${out_var} ${result} PARENT_SCOPE)
+endfunction()
+
+# Our plugin files built for MeshLabs of another precision than <tag>'s, which <tag>'s MeshLab must refuse.
+function(vsa_filterplugin_foreign_plugins tag out_var)
+  get_property(tags GLOBAL PROPERTY VSA_FILTERPLUGIN_TAGS)
+  get_target_property(scalar meshlab_fp_${tag} MESHLAB_FP_SCALAR)
+  set(result "")
+  foreach(other IN LISTS tags)
+    get_target_property(other_scalar meshlab_fp_${other} MESHLAB_FP_SCALAR)
+    if(NOT other_scalar STREQUAL scalar)
+      list(APPEND result "$<TARGET_FILE:filter_vsa_fp_${other}>")
+    endif()
+  endforeach()
+  set(${out_var} ${result} PARENT_SCOPE)
 endfunction()

@@ -12,6 +12,21 @@ if(NOT VSA_FILTERPLUGIN_MESHLAB_DIR)
 endif()
 include("${PROJECT_SOURCE_DIR}/cmake/MeshLabFilterPlugin.cmake")
 
+# Installing: MeshLab 2022.02+ loads the plugins of the user's extra-plugins folder at start (Help >
+# Plugin Info > Load Plugins copies a plugin there): <AppData>/MeshLab_64bit_<fp|dp>/MeshLabExtraPlugins/
+# <version>, where <AppData> is QStandardPaths' data location for MeshLab's organisation, "VCG".
+if(DEFINED ENV{XDG_DATA_HOME} AND NOT "$ENV{XDG_DATA_HOME}" STREQUAL "")
+  set(_vsa_user_data "$ENV{XDG_DATA_HOME}/VCG")
+else()
+  set(_vsa_user_data "$ENV{HOME}/.local/share/VCG")
+endif()
+set(VSA_MESHLAB_USER_DATA_DIR "${_vsa_user_data}" CACHE PATH
+    "MeshLab 2022.02+ user data folder (holds MeshLab_64bit_fp/ and MeshLab_64bit_dp/): where \
+`cmake --install` puts the FilterPlugin builds")
+# Release archives, one per MeshLab version and precision, laid out as MeshLab's extra plugins are:
+# build/release/filter_vsa-<version>-MeshLab-<MeshLab version>-linux.tar.gz.
+add_custom_target(release_archives)
+
 foreach(dir IN LISTS VSA_FILTERPLUGIN_MESHLAB_DIR)
   vsa_import_meshlab_tree("${dir}" tag)
   get_target_property(version meshlab_fp_${tag} MESHLAB_FP_VERSION)
@@ -28,4 +43,26 @@ foreach(dir IN LISTS VSA_FILTERPLUGIN_MESHLAB_DIR)
   set_target_properties(${target} PROPERTIES OUTPUT_NAME filter_vsa
     LIBRARY_OUTPUT_DIRECTORY "${CMAKE_CURRENT_BINARY_DIR}/meshlab-${version}")
   set_property(GLOBAL APPEND PROPERTY VSA_FILTERPLUGIN_TAGS ${tag})
+
+  get_target_property(scalar meshlab_fp_${tag} MESHLAB_FP_SCALAR)
+  set(precision fp)
+  if(scalar STREQUAL "double")
+    set(precision dp)
+  endif()
+  set(extra_plugins "MeshLab_64bit_${precision}/MeshLabExtraPlugins/${version}")
+  install(TARGETS ${target} LIBRARY DESTINATION "${VSA_MESHLAB_USER_DATA_DIR}/${extra_plugins}"
+    COMPONENT meshlab-${version})
+  set(archive "filter_vsa-${PROJECT_VERSION}-MeshLab-${version}-linux")
+  set(archive_file "${CMAKE_BINARY_DIR}/release/${archive}.tar.gz")
+  add_custom_command(OUTPUT "${archive_file}"
+    COMMAND ${CMAKE_COMMAND} -DPLUGIN=$<TARGET_FILE:${target}> -DNAME=${archive} -DMESHLAB_VERSION=${version}
+            -DMESHLAB_SCALAR=${scalar} -DEXTRA_PLUGINS=${extra_plugins} -DOUT=${CMAKE_BINARY_DIR}/release -DSOURCE=${PROJECT_SOURCE_DIR}
+            -P ${PROJECT_SOURCE_DIR}/cmake/MakeReleaseArchive.cmake
+    DEPENDS ${target} ${PROJECT_SOURCE_DIR}/cmake/MakeReleaseArchive.cmake ${PROJECT_SOURCE_DIR}/LICENSE
+    COMMENT "Release archive release/${archive}.tar.gz")
+  # Built with everything: the tests unpack and load it as a user does.
+  add_custom_target(release_archive_${tag} ALL DEPENDS "${archive_file}")
+  set_target_properties(${target} PROPERTIES VSA_RELEASE_ARCHIVE "${archive_file}"
+    VSA_INSTALLED_FILE "${VSA_MESHLAB_USER_DATA_DIR}/${extra_plugins}/libfilter_vsa.so")
+  add_dependencies(release_archives release_archive_${tag})
 endforeach()

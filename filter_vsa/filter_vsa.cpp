@@ -99,6 +99,9 @@ bool FilterVsaPlugin::apply(MeshDocument &md, const RichParameterList &parameter
         input->updateDataMask(MeshModel::MM_FACECOLOR | MeshModel::MM_FACEQUALITY);
         ColorizeRegions(input->cm, outcome.faceRegion, outcome.regionCount);
     }
+    // The new layer covers the input exactly: shown together they z-fight, so the input is hidden
+    // (still in the project, one click away in the layer dialog).
+    md.setVisible(input->id(), false);
     md.setCurrent(output);
     return true;
 }

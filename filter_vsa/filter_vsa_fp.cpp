@@ -27,7 +27,9 @@ FilterPlugin::FilterClass FilterVsaPlugin::getClass(const QAction *) const { ret
 
 FilterPlugin::FilterArity FilterVsaPlugin::filterArity(const QAction *) const { return SINGLE_MESH; }
 
-int FilterVsaPlugin::getPreConditions(const QAction *) const { return MeshModel::MM_FACENUMBER; }
+// No pre-condition on faces: pymeshlab and MeshLab would refuse a point cloud or an empty mesh with
+// "Current mesh does not have Any Faces.", where ours says what the mesh is and what the filter needs.
+int FilterVsaPlugin::getPreConditions(const QAction *) const { return MeshModel::MM_NONE; }
 
 // vcg_core builds its own flat adjacency, so no vcg topology is required of the input;
 // colouring needs per-face colour and quality, enabled on demand in apply().
@@ -107,6 +109,9 @@ std::map<std::string, QVariant> FilterVsaPlugin::apply(MeshDocument &md, const R
         ColorizeRegions(input->cm, outcome.faceRegion, outcome.regionCount);
         postConditionMask = MeshModel::MM_FACECOLOR | MeshModel::MM_FACEQUALITY;
     }
+    // The new layer covers the input exactly: shown together they z-fight, so the input is hidden
+    // (still in the project, one click away in the layer dialog).
+    md.setVisible(input->id(), false);
     md.setCurrent(output);
     return outcome.figures;
 }

@@ -5,6 +5,7 @@
 #include <vcg/complex/allocate.h>
 
 #include <QFileInfo>
+#include <QRegularExpression>
 
 #include <exception>
 #include <new>
@@ -140,12 +141,24 @@ void ColorizeRegions(CMeshO &mesh, const std::vector<int> &faceRegion, int regio
     }
 }
 
+namespace {
+
+/// "fandisk" for the layer "fandisk.off", and for "fandisk VSA k=129", an earlier output of ours.
+QString SourceMeshName(const QString &inputLabel)
+{
+    // An approximation approximated again is named after the mesh it came from, not "... VSA k=129 VSA k=40".
+    static const QRegularExpression ourSuffix("( VSA k=\\d+)+$");
+    return QFileInfo(inputLabel).completeBaseName().remove(ourSuffix);
+}
+
+}  // namespace
+
 QString ApproximationLayerName(const QString &inputLabel, int regionCount)
 {
-    return QString("%1 VSA k=%2").arg(QFileInfo(inputLabel).completeBaseName()).arg(regionCount);
+    return QString("%1 VSA k=%2").arg(SourceMeshName(inputLabel)).arg(regionCount);
 }
 
 QString AnchorLayerName(const QString &inputLabel)
 {
-    return QFileInfo(inputLabel).completeBaseName() + " VSA anchors";
+    return SourceMeshName(inputLabel) + " VSA anchors";
 }

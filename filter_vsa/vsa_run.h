@@ -34,10 +34,10 @@ VsaRunOutcome RunVsa(const CMeshO &input, const VsaFilterSettings &settings, CMe
 /// Needs per-face colour and quality enabled on `mesh`.
 void ColorizeRegions(CMeshO &mesh, const std::vector<int> &faceRegion, int regionCount);
 
-/// "fandisk VSA k=40" for the layer "fandisk.off".
+/// "fandisk VSA k=40" for the layer "fandisk.off" or "fandisk VSA k=129".
 QString ApproximationLayerName(const QString &inputLabel, int regionCount);
 
-/// "fandisk VSA anchors" for the layer "fandisk.off".
+/// "fandisk VSA anchors" for the layer "fandisk.off" or "fandisk VSA k=129".
 QString AnchorLayerName(const QString &inputLabel);
 
 #endif  // FILTER_VSA_RUN_H

@@ -30,7 +30,7 @@ const std::string kFandisk = kResources + "/meshes/fandisk.off";
 
 struct ServerRun
 {
-    int exitCode = -1;    ///< meshlabserver's exit status; -1 if it did not exit normally
+    int exitCode = -1;    ///< meshlabserver's exit status; -1 if it did not run
     std::string output;   ///< everything it printed, log included
 };
 
@@ -64,9 +64,18 @@ int RunCommand(const std::string &command, const fs::path &output)
 ServerRun RunServer(const fs::path &dir, const std::string &arguments)
 {
     const fs::path output = dir / "meshlabserver.out";
+    const fs::path script = dir / "meshlabserver.sh";
+    const fs::path status = dir / "meshlabserver.status";
+    // meshlabserver's own exit status, written from inside xvfb-run: xvfb-run's may be its own
+    // (exit 5 when removing its temporary folder fails) whatever meshlabserver did.
+    std::ofstream(script) << Quote(VSA_MESHLABSERVER) << " " << arguments << "\necho $? > " << Quote(status.string())
+                          << "\n";
+    fs::remove(status);
+    RunCommand(std::string(VSA_XVFB_RUN) + " -a sh " + Quote(script.string()), output);
     ServerRun run;
-    run.exitCode = RunCommand(std::string(VSA_XVFB_RUN) + " -a " + Quote(VSA_MESHLABSERVER) + " " + arguments, output);
     run.output = ReadFile(output);
+    const std::string code = ReadFile(status);
+    if (!code.empty()) run.exitCode = std::stoi(code);
     return run;
 }
 
