@@ -101,6 +101,9 @@ std::map<std::string, QVariant> FilterVsaPlugin::apply(MeshDocument &md, const R
     const QString name = ApproximationLayerName(input->label(), outcome.regionCount);
     MeshModel *output = md.addNewMesh(approximation, name, false);  // `input` stays valid
     log(QString("VSA: added layer \"%1\"").arg(output->label()).toStdString());
+    // A polygonal layer: MeshLab's OBJ and OFF writers (and pymeshlab's save_polygonal) then write
+    // the regions as polygons, joined across the faux edges.
+    if (settings.core.meshing.polygonal) output->updateDataMask(MeshModel::MM_POLYGONAL);
     if (settings.anchorLayer) md.addNewMesh(anchors, AnchorLayerName(input->label()), false);
     // What changed on the meshes that existed before (MeshLab refreshes their rendering).
     postConditionMask = MeshModel::MM_NONE;
