@@ -15,6 +15,7 @@
 #       The target carries the tree's facts as properties MESHLAB_FP_VERSION, MESHLAB_FP_SCALAR,
 #       MESHLAB_FP_SOURCE_DIR, MESHLAB_FP_VCGLIB_DIR, MESHLAB_FP_COMMON_LIBRARY,
 #       MESHLAB_FP_PLUGIN_DIR (MeshLab's own plugins there: io_base, filter_measure, ...),
+#       MESHLAB_FP_APPLICATION (the `meshlab` executable built with the library, if any),
 #       MESHLAB_FP_HOST ("meshlab": a MeshLab built here, which our own test host links to;
 #       "pymeshlab": the wheel's, loaded only by pymeshlab itself), MESHLAB_FP_PYTHON (pymeshlab's
 #       interpreter) and MESHLAB_FP_ORIGIN (Debian version + tarball sha256, the wheel, or the
@@ -65,8 +66,11 @@ function(_vsa_read_meshlab_tree dir)
     if(libs)
       list(GET libs 0 MESHLAB_FP_COMMON_LIBRARY)
     endif()
-    get_filename_component(MESHLAB_FP_PLUGIN_DIR "${MESHLAB_FP_COMMON_LIBRARY}" DIRECTORY)
-    set(MESHLAB_FP_PLUGIN_DIR "${MESHLAB_FP_PLUGIN_DIR}/plugins")
+    get_filename_component(distrib "${MESHLAB_FP_COMMON_LIBRARY}" DIRECTORY)
+    set(MESHLAB_FP_PLUGIN_DIR "${distrib}/plugins")
+    if(EXISTS "${distrib}/meshlab")
+      set(MESHLAB_FP_APPLICATION "${distrib}/meshlab")
+    endif()
     set(origin "MeshLab build directory ${dir}")
   endif()
   if(NOT MESHLAB_FP_VERSION OR NOT MESHLAB_FP_SCALAR OR NOT EXISTS "${MESHLAB_FP_COMMON_LIBRARY}"
@@ -78,7 +82,7 @@ function(_vsa_read_meshlab_tree dir)
   if(NOT DEFINED MESHLAB_FP_HOST)
     set(MESHLAB_FP_HOST "meshlab")
   endif()
-  foreach(var VERSION SCALAR SOURCE_DIR VCGLIB_DIR COMMON_LIBRARY PLUGIN_DIR HOST PYTHON)
+  foreach(var VERSION SCALAR SOURCE_DIR VCGLIB_DIR COMMON_LIBRARY PLUGIN_DIR APPLICATION HOST PYTHON)
     set(MESHLAB_FP_${var} "${MESHLAB_FP_${var}}" PARENT_SCOPE)
   endforeach()
   set(MESHLAB_FP_ORIGIN "${origin}" PARENT_SCOPE)
@@ -107,7 +111,7 @@ function(vsa_import_meshlab_tree dir tag_var)
     INTERFACE_INCLUDE_DIRECTORIES "${MESHLAB_FP_SOURCE_DIR};${MESHLAB_FP_VCGLIB_DIR}"
     INTERFACE_COMPILE_DEFINITIONS "MESHLAB_VERSION=${MESHLAB_FP_VERSION};MESHLAB_SCALAR=${MESHLAB_FP_SCALAR}"
     INTERFACE_LINK_LIBRARIES "Qt5::Core;Qt5::Gui;Qt5::Widgets;Qt5::OpenGL;Qt5::Xml;Qt5::Network;Eigen3::Eigen")
-  foreach(var VERSION SCALAR SOURCE_DIR VCGLIB_DIR COMMON_LIBRARY PLUGIN_DIR HOST PYTHON ORIGIN)
+  foreach(var VERSION SCALAR SOURCE_DIR VCGLIB_DIR COMMON_LIBRARY PLUGIN_DIR APPLICATION HOST PYTHON ORIGIN)
     set_property(TARGET ${target} PROPERTY MESHLAB_FP_${var} "${MESHLAB_FP_${var}}")
   endforeach()
   message(STATUS "MeshLab FilterPlugin API: ${MESHLAB_FP_VERSION} (${MESHLAB_FP_SCALAR}) from ${MESHLAB_FP_ORIGIN}: "

@@ -5,12 +5,15 @@
 #  - the newest `meshlab` source package of Debian unstable (sid), fetched through a private apt
 #    configuration (scripts/apt-sources-sid; /etc/apt is never touched); apt checks the tarball
 #    against the Sources index, which it checked against Debian's signed Release file
-#  - unpacked into .deps/meshlab-modern/<ML_VERSION>/src, and only `meshlab-common` plus two of
-#    MeshLab's own plugins (io_base: mesh I/O; filter_measure: a reference filter plugin) built
-#    into .deps/meshlab-modern/<ML_VERSION>/build in float, as MeshLab's own releases are (mini
-#    build, no optional external libraries), cached by the tarball's sha256 (build/.vsa-stamp): a
-#    second run only re-reads apt's index. pymeshlab's double-precision MeshLab is not built: the
-#    plugin for it links to the wheel's own library (scripts/setup_pymeshlab.sh).
+#  - unpacked into .deps/meshlab-modern/<ML_VERSION>/src, and only `meshlab-common`, the `meshlab`
+#    GUI application and two of MeshLab's own plugins (io_base: mesh I/O; filter_measure: a
+#    reference filter plugin) built into .deps/meshlab-modern/<ML_VERSION>/build in float, as
+#    MeshLab's own releases are (mini build, no optional external libraries), cached by the
+#    tarball's sha256 (build/.vsa-stamp): a second run only re-reads apt's index. The application
+#    is build/src/distrib/meshlab; it loads its stock plugins from distrib/plugins next to it, and
+#    a user's from ~/.local/share/VCG/MeshLab_64bit_fp/MeshLabExtraPlugins/<ML_VERSION>/.
+#    pymeshlab's double-precision MeshLab is not built: the plugin for it links to the wheel's own
+#    library (scripts/setup_pymeshlab.sh).
 #  - .deps/meshlab-modern/current -> <ML_VERSION>; build/meshlab-build-info.cmake and
 #    build/meshlab-build-info.txt tell the MESHLAB_VERSION / MESHLAB_SCALAR the build used;
 #    cmake/MeshLabFilterPlugin.cmake reads the former (-DVSA_FILTERPLUGIN_MESHLAB_DIR=<build dir>).
@@ -94,32 +97,37 @@ if [ "$(cat "$src/.vsa-tarball-sha256" 2>/dev/null)" != "$tar_sha" ]; then
   echo "$tar_sha" > "$src/.vsa-tarball-sha256"
 fi
 
-# build_tree BUILD_DIR: meshlab-common (+ the chosen plugins) in float.
+# build_tree BUILD_DIR: meshlab-common, the meshlab application and the chosen plugins, in float.
+# A tree built before the application was (libraries only) is configured again and keeps its
+# objects: only the application is compiled.
 build_tree() {
   local scalar=float build=$1
-  local stamp_want="$tar_sha $deb_version scalar=$scalar plugins=$plugins_cmake"
+  local stamp_want="$tar_sha $deb_version scalar=$scalar plugins=$plugins_cmake app=meshlab"
   [ "$(cat "$build/.vsa-stamp" 2>/dev/null)" = "$stamp_want" ] && return 0
-  echo "setup_filterplugin: building meshlab-common $ml_version ($scalar) from Debian meshlab $deb_version" \
-       "(sha256 $tar_sha) into $build"
+  echo "setup_filterplugin: building meshlab-common and meshlab $ml_version ($scalar)" \
+       "from Debian meshlab $deb_version (sha256 $tar_sha) into $build"
   rm -f "$build/.vsa-stamp"
   mkdir -p "$build"
   local tb; tb=$(date +%s)
   cmake -S "$src" -B "$build" -G "Unix Makefiles" -DCMAKE_BUILD_TYPE=Release \
         -DMESHLAB_BUILD_MINI=ON -DMESHLAB_ALLOW_OPTIONAL_EXTERNAL_LIBRARIES=OFF \
-        -DMESHLAB_BUILD_ONLY_LIBRARIES=ON -DMESHLAB_BUILD_WITH_DOUBLE_SCALAR=OFF \
+        -DMESHLAB_BUILD_ONLY_LIBRARIES=OFF -DMESHLAB_BUILD_WITH_DOUBLE_SCALAR=OFF \
         -DMESHLAB_PLUGINS="$plugins_cmake" > "$build/vsa-configure.log" 2>&1 \
     || { tail -40 "$build/vsa-configure.log"; exit 1; }
-  cmake --build "$build" -j "$jobs" --target meshlab-common "${ml_plugins[@]}" > "$build/vsa-build.log" 2>&1 \
+  # copy-distrib-files: the shaders the application reads from distrib/shaders.
+  cmake --build "$build" -j "$jobs" --target meshlab-common meshlab copy-distrib-files "${ml_plugins[@]}" \
+    > "$build/vsa-build.log" 2>&1 \
     || { grep -B2 -A8 -m5 "error" "$build/vsa-build.log" || tail -40 "$build/vsa-build.log"; exit 1; }
   echo "setup_filterplugin: build took $(( $(date +%s) - tb )) s"
 
   # The defines MeshLab compiled meshlab-common with (PUBLIC: every plugin must use the same).
-  local defs b_version b_scalar lib
+  local defs b_version b_scalar lib app
   defs=$(grep '^CXX_DEFINES' "$build/src/common/CMakeFiles/meshlab-common.dir/flags.make")
   b_version=$(sed -n 's/.*-DMESHLAB_VERSION=\([^ ]*\).*/\1/p' <<< "$defs")
   b_scalar=$(sed -n 's/.*-DMESHLAB_SCALAR=\([^ ]*\).*/\1/p' <<< "$defs")
   lib="$build/src/distrib/libmeshlab-common.so"
-  test -f "$lib" -a -n "$b_version" -a "$b_scalar" = "$scalar"
+  app="$build/src/distrib/meshlab"
+  test -f "$lib" -a -x "$app" -a -n "$b_version" -a "$b_scalar" = "$scalar"
   cat > "$build/meshlab-build-info.cmake" <<EOF
 # Written by scripts/setup_filterplugin.sh: how this libmeshlab-common was built.
 set(MESHLAB_FP_DEBIAN_VERSION "$deb_version")
@@ -130,6 +138,7 @@ set(MESHLAB_FP_SOURCE_DIR "$src/src")
 set(MESHLAB_FP_VCGLIB_DIR "$src/src/vcglib")
 set(MESHLAB_FP_COMMON_LIBRARY "$lib")
 set(MESHLAB_FP_PLUGIN_DIR "$build/src/distrib/plugins")
+set(MESHLAB_FP_APPLICATION "$app")
 EOF
   cat > "$build/meshlab-build-info.txt" <<EOF
 debian_version=$deb_version
@@ -140,6 +149,7 @@ MESHLAB_SCALAR=$b_scalar
 include_dirs=$src/src $src/src/vcglib /usr/include/eigen3
 libmeshlab_common=$lib
 plugins_dir=$build/src/distrib/plugins
+application=$app
 EOF
   echo "$stamp_want" > "$build/.vsa-stamp"
 }
