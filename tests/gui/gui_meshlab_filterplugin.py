@@ -1,0 +1,182 @@
+#!/usr/bin/env python3
+"""GUI test of our FilterPlugin build in the real MeshLab 2025.07 application, under its own Xvfb.
+
+The plugin is installed as a user installs it, in a private HOME: into MeshLab's extra-plugins
+folder ~/.local/share/VCG/MeshLab_64bit_fp/MeshLabExtraPlugins/<version>/
+(MeshLabApplication::extraPluginsLocation(), "_dp" for a double-precision MeshLab), either copied
+there before MeshLab starts (--install copy) or through Help > Plugin Info > Load Plugins and
+MeshLab's file dialog (--install load-plugins), which checks the plugin and copies it there
+itself. Then, as in the 2020.09 test (meshlab_gui.py): Filters > Remeshing, Simplification and
+Reconstruction > Variational Shape Approximation, every parameter in the dialog, the number of
+proxies typed, Apply, the new layer "<mesh> VSA k=<k>" in the layer panel and our log line. Last,
+the input layer must be hidden (a closed eye in the layer panel) and the new one shown (an open,
+green eye), so the two do not overlap in the view.
+
+It fails when MeshLab cannot load the plugin, when Load Plugins does not install it, when the
+filter is missing from the menu, when the dialog lacks a parameter, when Apply adds no layer, and
+when the input is still shown after Apply. Screenshots of every step stay in --artifacts; their
+paths are printed. Exit status: 0 pass, 1 fail, 77 skip (a needed tool is missing).
+"""
+import shutil
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+import meshlab_gui
+from meshlab_gui import TestFailure, find_line, log, norm, ocr
+
+
+def extra_plugins_folder(home, version, scalar):
+    """MeshLabApplication::extraPluginsLocation(): QStandardPaths' AppDataLocation, that is
+    ~/.local/share/<organization>/<application name>, + MeshLabExtraPlugins/<MESHLAB_VERSION>;
+    main.cpp names the application MeshLab_<word size>bit_<fp or dp> and the organization VCG."""
+    precision = "dp" if scalar == "double" else "fp"
+    return Path(home) / ".local/share/VCG" / f"MeshLab_64bit_{precision}" / "MeshLabExtraPlugins" / version
+
+
+def load_plugins(session, main, folder):
+    """Help > Plugin Info > Load Plugins, the plugin's path typed into the file dialog; checks
+    that MeshLab copied it into `folder` and lists it, and closes the dialog (MeshLab then adds
+    the plugin's filters to its menus)."""
+    args = session.args
+    help_menu = meshlab_gui.open_menu(session, main, "Help", "alt+h")
+    lines, shot = session.ocr_window(help_menu, "menu_help")
+    entry = find_line(lines, "Plugin Info", max_prefix=0)
+    if entry is None:
+        raise TestFailure(f"no 'Plugin Info' in the Help menu ({shot}, read: {session.dump(lines, 'menu_help')})")
+    session.click(entry.center)
+    info = session.wait_for(lambda: session.windows("^Plugin Information$")[:1], 10,
+                            "the 'Plugin Information' dialog")[0]
+    time.sleep(0.5)
+    lines, shot = session.ocr_window(info, "plugin_info")
+    button = find_line(lines, "Load Plugins", max_prefix=0)
+    if button is None:
+        raise TestFailure(f"no 'Load Plugins' button in Plugin Information ({shot})")
+    loaded_before = plugins_loaded(lines)
+    session.click(button.center)
+    dialog = session.wait_for(lambda: session.windows("^Load Plugins$")[:1], 10, "the 'Load Plugins' file dialog")[0]
+    time.sleep(0.5)
+    session.shot("load_plugins_dialog", dialog)
+    # Qt's own file dialog (no desktop here) starts in its file name field: a full path is taken.
+    session.x("xdotool", "type", "--delay", "20", str(Path(args.plugin).resolve()))
+    session.shot("load_plugins_typed", dialog)
+    session.x("xdotool", "key", "Return")
+    copied = folder / Path(args.plugin).name
+
+    def installed():
+        # PluginManager::checkPlugin refusing the plugin: a box, and no copy.
+        for box in session.windows("^Error while loading plugin"):
+            raise TestFailure(f"Load Plugins refused the plugin: {session.window_text(box, 'load_error')}")
+        return copied.is_file() and not session.windows("^Load Plugins$")
+    session.wait_for(installed, 10, f"MeshLab to copy the plugin to {copied}")
+
+    def listed():
+        time.sleep(0.5)
+        read, _ = session.ocr_window(info, "plugin_info_loaded")
+        return read if any(norm(Path(args.plugin).name) in norm(l.text) for l in read) else None
+    lines = session.wait_for(listed, 10, f"Plugin Information to list {Path(args.plugin).name}")
+    if plugins_loaded(lines) != loaded_before + 1:
+        raise TestFailure(f"Plugin Information counted {plugins_loaded(lines)} plugins after Load Plugins, "
+                          f"{loaded_before} before")
+    log(f"Load Plugins copied the plugin to {copied}; Plugin Information lists it "
+        f"({loaded_before} plugins before, {loaded_before + 1} after)")
+    # Escape closes it as its OK button does (whose icon keeps OCR from reading it).
+    session.x("xdotool", "windowfocus", str(info), check=False)
+    session.x("xdotool", "key", "Escape")
+    session.wait_for(lambda: not session.windows("^Plugin Information$"), 10, "Plugin Information to close")
+
+
+def plugins_loaded(lines):
+    """The number in Plugin Information's 'Number of plugin loaded: N' (None if not read)."""
+    line = find_line(lines, "Number of plugin loaded", max_prefix=0)
+    digits = norm(line.text)[len(norm("Number of plugin loaded")):] if line else ""
+    return int(digits) if digits.isdigit() else None
+
+
+def green_pixels(session, png, box, name):
+    """How many clearly green pixels `box` (x, y, width, height) of the screenshot `png` holds: the
+    layer list's open eye (layer_eye_open.png) has a green iris, the closed one and the rest of
+    the row (white, or blue when selected) none. The crop is kept as <name>.png."""
+    x, y, w, h = (round(v) for v in box)
+    crop = session.artifacts / f"{name}.png"
+    subprocess.run(["convert", str(png), "-crop", f"{w}x{h}+{x}+{y}", "+repage", str(crop)], check=True)
+    session.shots.append(crop)
+    text = subprocess.run(["convert", str(crop), "-depth", "8", "txt:-"], check=True,
+                          stdout=subprocess.PIPE, text=True).stdout
+    green = 0
+    for row in text.splitlines()[1:]:
+        r, g, b = (float(v) for v in row.split("(", 1)[1].split(")", 1)[0].split(",")[:3])
+        green += g > r + 60 and g > b + 60
+    return green
+
+
+def check_input_hidden(session, main, expected):
+    """The input's row in the layer list shows a closed eye and the new layer's an open one. Each
+    row is found by OCR (the layer's name after its index); its eye is left of the index, so the
+    strip left of the name holds the expander, the eye and the index."""
+    base = Path(session.args.mesh).name.split(".", 1)[0]
+    shot = session.shot("layers_after_apply")
+    rows = {}
+    for scale, threshold in ((2, None), (3, None), (2, 60)):
+        for line in ocr(shot, session.artifacts, scale, crop=main.panel, threshold=threshold):
+            words = [norm(w.text) for w in line.words]
+            # The name's first word, after the index (the eye and the expander may read as a
+            # character or two); not the label under the list nor the log, which have no index.
+            at = next((i for i, w in enumerate(words) if w == norm(base) and i > 0 and words[i - 1][-1:].isdigit()),
+                      None)
+            if at is None:
+                continue
+            rest = "".join(words[at:])
+            kind = "input" if rest == norm(base) else "output" if rest.startswith(norm(expected)) else None
+            if kind and kind not in rows:
+                rows[kind] = line.words[at], line
+        if len(rows) == 2:
+            break
+    if len(rows) < 2:
+        raise TestFailure(f"could not find both the input's and the new layer's rows in the layer list "
+                          f"(found {sorted(rows)}; {shot})")
+    green = {}
+    for kind, (name, line) in rows.items():
+        middle = name.top + name.height / 2
+        green[kind] = green_pixels(session, shot, (name.left - 70, middle - 12, 66, 24), f"eye_{kind}")
+    log(f"layer list, green pixels left of the name: input {green['input']} ({rows['input'][1]}), "
+        f"new layer {green['output']} ({rows['output'][1]})")
+    if green["output"] < 10:
+        raise TestFailure(f"the new layer's eye is not open ({shot})")
+    if green["input"] >= 10:
+        raise TestFailure(f"the input layer '{base}' is still shown after Apply: its eye is open ({shot})")
+
+
+def run(session):
+    args = session.args
+    home = session.make_home()
+    folder = extra_plugins_folder(home, args.version, args.scalar)
+    if args.install == "copy":
+        folder.mkdir(parents=True)
+        shutil.copy2(args.plugin, folder)
+        log(f"installed {args.plugin} as {folder / Path(args.plugin).name}")
+    main = meshlab_gui.open_mesh(session)
+    if args.install == "load-plugins":
+        load_plugins(session, main, folder)
+    dialog = meshlab_gui.open_filter_dialog(session, main)
+    meshlab_gui.apply_filter(session, main, *dialog)
+    check_input_hidden(session, main, meshlab_gui.layer_name(args.mesh, args.k))
+    # What the user sees once the dialog is closed (kept for a person to look at).
+    close = next((w for l in dialog[1] for w in l.words if w.text == "Close"), None)
+    if close:
+        session.click(close.center)
+        time.sleep(1)
+        session.shot("result")
+
+
+def add_arguments(parser):
+    parser.add_argument("--plugin", required=True, help="our plugin built for this MeshLab (libfilter_vsa.so)")
+    parser.add_argument("--version", required=True, help="the MeshLab's MESHLAB_VERSION (2025.07, 2025.07d)")
+    parser.add_argument("--scalar", choices=("float", "double"), default="float", help="its MESHLAB_SCALAR")
+    parser.add_argument("--install", choices=("copy", "load-plugins"), default="copy",
+                        help="copy the plugin into the extra-plugins folder, or install it with Load Plugins")
+
+
+if __name__ == "__main__":
+    sys.exit(meshlab_gui.main(__doc__, run, add_arguments))
