@@ -121,10 +121,10 @@ def check_input_hidden(session, main, expected):
     for scale, threshold in ((2, None), (3, None), (2, 60)):
         for line in ocr(shot, session.artifacts, scale, crop=main.panel, threshold=threshold):
             words = [norm(w.text) for w in line.words]
-            # The name's first word, after the index (the eye and the expander may read as a
-            # character or two); not the label under the list nor the log, which have no index.
-            at = next((i for i, w in enumerate(words) if w == norm(base) and i > 0 and words[i - 1][-1:].isdigit()),
-                      None)
+            # The name's first word, after the index (the icons may read as stray marks, which
+            # norm() empties); not the label under the list nor the log, which have no index.
+            at = next((i for i, w in enumerate(words)
+                       if w == norm(base) and "".join(words[:i])[-1:].isdigit()), None)
             if at is None:
                 continue
             rest = "".join(words[at:])
