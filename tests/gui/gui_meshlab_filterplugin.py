@@ -6,7 +6,8 @@ folder ~/.local/share/VCG/MeshLab_64bit_fp/MeshLabExtraPlugins/<version>/
 (MeshLabApplication::extraPluginsLocation(), "_dp" for a double-precision MeshLab), either copied
 there before MeshLab starts (--install copy) or through Help > Plugin Info > Load Plugins and
 MeshLab's file dialog (--install load-plugins), which checks the plugin and copies it there
-itself. Then, as in the 2020.09 test (meshlab_gui.py): Filters > Remeshing, Simplification and
+itself. With --archive the plugin is the one in our release archive for this MeshLab, unpacked
+first as a user does. Then, as in the 2020.09 test (meshlab_gui.py): Filters > Remeshing, Simplification and
 Reconstruction > Variational Shape Approximation, every parameter in the dialog, the number of
 proxies typed, Apply, the new layer "<mesh> VSA k=<k>" in the layer panel and our log line. Last,
 the input layer must be hidden (a closed eye in the layer panel) and the new one shown (an open,
@@ -41,26 +42,25 @@ def load_plugins(session, main, folder):
     the plugin's filters to its menus)."""
     args = session.args
     help_menu = meshlab_gui.open_menu(session, main, "Help", "alt+h")
-    lines, shot = session.ocr_window(help_menu, "menu_help")
-    entry = find_line(lines, "Plugin Info", max_prefix=0)
+    entry, lines, shot = session.menu_entry(help_menu, "menu_help", "Plugin Info")
     if entry is None:
         raise TestFailure(f"no 'Plugin Info' in the Help menu ({shot}, read: {session.dump(lines, 'menu_help')})")
     session.click(entry.center)
     info = session.wait_for(lambda: session.windows("^Plugin Information$")[:1], 10,
                             "the 'Plugin Information' dialog")[0]
-    time.sleep(0.5)
-    lines, shot = session.ocr_window(info, "plugin_info")
-    button = find_line(lines, "Load Plugins", max_prefix=0)
-    if button is None:
-        raise TestFailure(f"no 'Load Plugins' button in Plugin Information ({shot})")
+    # Each window is read once it is painted (the machine may be busy): until OCR finds its text.
+    lines = session.wait_for(lambda: read_if(session, info, "plugin_info", "Load Plugins"), 10,
+                             "Plugin Information's 'Load Plugins' button")
     loaded_before = plugins_loaded(lines)
-    session.click(button.center)
+    session.click(find_line(lines, "Load Plugins", max_prefix=0).center)
     dialog = session.wait_for(lambda: session.windows("^Load Plugins$")[:1], 10, "the 'Load Plugins' file dialog")[0]
-    time.sleep(0.5)
-    session.shot("load_plugins_dialog", dialog)
+    session.wait_for(lambda: read_if(session, dialog, "load_plugins_dialog", "File name"), 10,
+                     "the file dialog's 'File name' field")
     # Qt's own file dialog (no desktop here) starts in its file name field: a full path is taken.
-    session.x("xdotool", "type", "--delay", "20", str(Path(args.plugin).resolve()))
-    session.shot("load_plugins_typed", dialog)
+    path = str(Path(args.plugin).resolve())
+    session.x("xdotool", "type", "--delay", "20", path)
+    session.wait_for(lambda: read_if(session, dialog, "load_plugins_typed", Path(path).name, anywhere=True), 10,
+                     f"the file dialog to show the typed path {path}")
     session.x("xdotool", "key", "Return")
     copied = folder / Path(args.plugin).name
 
@@ -71,11 +71,8 @@ def load_plugins(session, main, folder):
         return copied.is_file() and not session.windows("^Load Plugins$")
     session.wait_for(installed, 10, f"MeshLab to copy the plugin to {copied}")
 
-    def listed():
-        time.sleep(0.5)
-        read, _ = session.ocr_window(info, "plugin_info_loaded")
-        return read if any(norm(Path(args.plugin).name) in norm(l.text) for l in read) else None
-    lines = session.wait_for(listed, 10, f"Plugin Information to list {Path(args.plugin).name}")
+    lines = session.wait_for(lambda: read_if(session, info, "plugin_info_loaded", copied.name, anywhere=True), 10,
+                             f"Plugin Information to list {copied.name}")
     if plugins_loaded(lines) != loaded_before + 1:
         raise TestFailure(f"Plugin Information counted {plugins_loaded(lines)} plugins after Load Plugins, "
                           f"{loaded_before} before")
@@ -85,6 +82,13 @@ def load_plugins(session, main, folder):
     session.x("xdotool", "windowfocus", str(info), check=False)
     session.x("xdotool", "key", "Escape")
     session.wait_for(lambda: not session.windows("^Plugin Information$"), 10, "Plugin Information to close")
+
+
+def read_if(session, window, name, text, anywhere=False):
+    """What OCR reads in `window` if it shows `text` (at the start of a line, or `anywhere`), else None."""
+    lines, _ = session.ocr_window(window, name)
+    found = any(norm(text) in norm(l.text) for l in lines) if anywhere else find_line(lines, text, max_prefix=0)
+    return lines if found else None
 
 
 def plugins_loaded(lines):
@@ -148,8 +152,26 @@ def check_input_hidden(session, main, expected):
         raise TestFailure(f"the input layer '{base}' is still shown after Apply: its eye is open ({shot})")
 
 
+def unpack_archive(session):
+    """--archive unpacked into the artifacts' download/ folder; its one libfilter_vsa.so becomes
+    --plugin (the archive's layout: <name>/libfilter_vsa.so, LICENSE, README.txt)."""
+    args = session.args
+    download = session.artifacts / "download"
+    shutil.rmtree(download, ignore_errors=True)
+    download.mkdir()
+    subprocess.run(["tar", "-xzf", args.archive, "-C", str(download)], check=True)
+    plugins = sorted(download.glob("*/libfilter_vsa.so"))
+    if len(plugins) != 1 or not (plugins[0].parent / "README.txt").is_file():
+        raise TestFailure(f"{args.archive} holds {[str(p.relative_to(download)) for p in plugins]} "
+                          "instead of one <name>/libfilter_vsa.so next to a README.txt")
+    args.plugin = str(plugins[0])
+    log(f"unpacked {Path(args.archive).name}: {plugins[0].relative_to(download)}")
+
+
 def run(session):
     args = session.args
+    if args.archive:
+        unpack_archive(session)
     home = session.make_home()
     folder = extra_plugins_folder(home, args.version, args.scalar)
     if args.install == "copy":
@@ -171,7 +193,9 @@ def run(session):
 
 
 def add_arguments(parser):
-    parser.add_argument("--plugin", required=True, help="our plugin built for this MeshLab (libfilter_vsa.so)")
+    plugin = parser.add_mutually_exclusive_group(required=True)
+    plugin.add_argument("--plugin", help="our plugin built for this MeshLab (libfilter_vsa.so)")
+    plugin.add_argument("--archive", help="our release archive for this MeshLab (.tar.gz)")
     parser.add_argument("--version", required=True, help="the MeshLab's MESHLAB_VERSION (2025.07, 2025.07d)")
     parser.add_argument("--scalar", choices=("float", "double"), default="float", help="its MESHLAB_SCALAR")
     parser.add_argument("--install", choices=("copy", "load-plugins"), default="copy",

@@ -275,6 +275,22 @@ class Session:
         origin = (0, 0) if window == "root" else self.geometry(window)[:2]
         return ocr(shot, self.artifacts, scale, origin), shot
 
+    def menu_entry(self, menu, name, label, timeout=3):
+        """The line `label` in the open `menu` window, read by OCR until it shows: a menu just
+        opened may not be painted yet on a busy machine. Returns it (None if it never shows),
+        the lines last read and the screenshot (<name>.png)."""
+        deadline = time.time() + timeout
+        origin = self.geometry(menu)[:2]
+        while True:
+            shot = self.shot(name, menu)
+            lines = ocr(shot, self.artifacts, 2, origin)
+            entry = find_line(lines, label, max_prefix=0)
+            if entry is None and time.time() > deadline:   # last, read it enlarged more
+                entry = find_line(ocr(shot, self.artifacts, 3, origin), label, max_prefix=0)
+            if entry is not None or time.time() > deadline:
+                return entry, lines, shot
+            time.sleep(0.5)
+
     def window_text(self, window, name):
         """What OCR reads in `window` (a message box, say), and the screenshot it read."""
         lines, shot = self.ocr_window(window, name)
@@ -406,8 +422,7 @@ def open_filter_dialog(session, main):
     screenshot it read and that screenshot's top-left on the screen."""
     # 2. The Filters menu, its mnemonic being Fi&lters.
     filters = open_menu(session, main, MENU, "alt+l")
-    lines, shot = session.ocr_window(filters, "menu_filters")
-    entry = find_line(lines, SUBMENU, max_prefix=0)
+    entry, lines, shot = session.menu_entry(filters, "menu_filters", SUBMENU)
     if entry is None:
         raise TestFailure(f"no '{SUBMENU}' in the {MENU} menu ({shot}, read: {session.dump(lines, 'menu_filters')})")
     before = session.windows()
@@ -419,10 +434,7 @@ def open_filter_dialog(session, main):
                           f"({session.shot('menu_remeshing')})") from None
 
     # 3. Our filter in that submenu.
-    lines, shot = session.ocr_window(submenu, "menu_remeshing")
-    entry = find_line(lines, FILTER, max_prefix=0)
-    if entry is None:
-        entry = find_line(ocr(shot, session.artifacts, 3, session.geometry(submenu)[:2]), FILTER, max_prefix=0)
+    entry, lines, shot = session.menu_entry(submenu, "menu_remeshing", FILTER)
     if entry is None:
         raise TestFailure(f"'{FILTER}' is not in {MENU} > {SUBMENU} ({shot}, read: "
                           f"{session.dump(lines, 'menu_remeshing')})")
