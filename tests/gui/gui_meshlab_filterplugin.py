@@ -54,8 +54,8 @@ def load_plugins(session, main, folder):
     loaded_before = plugins_loaded(lines)
     session.click(find_line(lines, "Load Plugins", max_prefix=0).center)
     dialog = session.wait_for(lambda: session.windows("^Load Plugins$")[:1], 10, "the 'Load Plugins' file dialog")[0]
-    session.wait_for(lambda: read_if(session, dialog, "load_plugins_dialog", "File name"), 10,
-                     "the file dialog's 'File name' field")
+    session.wait_for(lambda: read_if(session, dialog, "load_plugins_dialog", "Look in", "File name", "Files of type"),
+                     10, "the file dialog's 'Look in', 'File name' or 'Files of type'")
     # Qt's own file dialog (no desktop here) starts in its file name field: a full path is taken.
     path = str(Path(args.plugin).resolve())
     session.x("xdotool", "type", "--delay", "20", path)
@@ -84,11 +84,14 @@ def load_plugins(session, main, folder):
     session.wait_for(lambda: not session.windows("^Plugin Information$"), 10, "Plugin Information to close")
 
 
-def read_if(session, window, name, text, anywhere=False):
-    """What OCR reads in `window` if it shows `text` (at the start of a line, or `anywhere`), else None."""
+def read_if(session, window, name, *texts, anywhere=False):
+    """What OCR reads in `window` if it shows one of `texts` (at the start of a line, or
+    `anywhere`), else None."""
     lines, _ = session.ocr_window(window, name)
-    found = any(norm(text) in norm(l.text) for l in lines) if anywhere else find_line(lines, text, max_prefix=0)
-    return lines if found else None
+    for text in texts:
+        if any(norm(text) in norm(l.text) for l in lines) if anywhere else find_line(lines, text, max_prefix=0):
+            return lines
+    return None
 
 
 def plugins_loaded(lines):
