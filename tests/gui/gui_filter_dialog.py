@@ -4,10 +4,12 @@
 MeshLab is the private prefix's (build/meshlab-prefix, filter_vsa/CMakeLists.txt), whose plugin
 folder holds ours. The test opens the mesh, goes Filters > Remeshing, Simplification and
 Reconstruction > Variational Shape Approximation, checks the dialog shows every parameter, types
-the number of proxies, presses Apply and checks the new layer and the log's line (meshlab_gui.py).
+the number of proxies, presses Apply and checks the new layer, the log's line and that the input
+is hidden (meshlab_gui.py).
 
 It fails when the filter is missing from the menu, when the dialog lacks a parameter, when
-Apply adds no layer (a "Filter Failure" box, a crash, or no new layer in time). Screenshots of
+Apply adds no layer (a "Filter Failure" box, a crash, or no new layer in time), and when the
+input is still shown after Apply. Screenshots of
 every step stay in --artifacts; their paths are printed. Exit status: 0 pass, 1 fail, 77 skip
 (a needed tool is missing).
 """

@@ -7,7 +7,8 @@ The filter is reached as a user does: Filters > Remeshing, Simplification and Re
 Variational Shape Approximation with the mouse, every entry found by OCR in a capture of the
 menu's own window rather than at fixed pixels; the parameter dialog must show every parameter;
 the number of proxies is typed; Apply must add a layer "<mesh> VSA k=<k>" to the layer panel and
-the line 'VSA: added layer' to the log.
+the line 'VSA: added layer' to the log, and hide the input (a closed eye in the layer list, the new
+layer's open) so the two do not overlap in the view.
 
 Python 3 standard library only; needs Xvfb, xdotool, ImageMagick (import, convert) and
 tesseract (tesseract-ocr with its English data).
@@ -544,12 +545,77 @@ def apply_filter(session, main, dialog, lines, shot, origin):
     return found_rows, found_log
 
 
-def run_filter_dialog(session):
-    """The whole way from starting MeshLab to the new layer; returns the main window and what
-    apply_filter returned."""
+def green_pixels(session, png, box, name):
+    """How many clearly green pixels `box` (x, y, width, height) of the screenshot `png` holds: the
+    layer list's open eye (layer_eye_open.png) has a green iris, the closed one and the rest of
+    the row (white, or blue when selected) none. The crop is kept as <name>.png."""
+    x, y, w, h = (round(v) for v in box)
+    crop = session.artifacts / f"{name}.png"
+    subprocess.run(["convert", str(png), "-crop", f"{w}x{h}+{x}+{y}", "+repage", str(crop)], check=True)
+    session.shots.append(crop)
+    text = subprocess.run(["convert", str(crop), "-depth", "8", "txt:-"], check=True,
+                          stdout=subprocess.PIPE, text=True).stdout
+    green = 0
+    for row in text.splitlines()[1:]:
+        r, g, b = (float(v) for v in row.split("(", 1)[1].split(")", 1)[0].split(",")[:3])
+        green += g > r + 60 and g > b + 60
+    return green
+
+
+def check_input_hidden(session, main, expected):
+    """The input's row in the layer list shows a closed eye and the new layer's an open one. Each
+    row is found by OCR (the layer's name after its index); its eye is left of the index, so the
+    strip left of the name holds the expander, the eye and the index."""
+    base = Path(session.args.mesh).name.split(".", 1)[0]
+    shot = session.shot("layers_after_apply")
+    rows = {}
+    for scale, threshold in ((2, None), (3, None), (2, 60)):
+        for line in ocr(shot, session.artifacts, scale, crop=main.panel, threshold=threshold):
+            words = [norm(w.text) for w in line.words]
+            # The name's first word, after the index (the icons may read as stray marks, which
+            # norm() empties); not the label under the list nor the log, which have no index.
+            at = next((i for i, w in enumerate(words)
+                       if w == norm(base) and "".join(words[:i])[-1:].isdigit()), None)
+            if at is None:
+                continue
+            # The input's name ends at its first word (what follows is the row's icons, read as
+            # stray marks); the new layer's goes on with "VSA k=<k>".
+            rest = "".join(words[at:])
+            kind = "output" if rest.startswith(norm(expected)) else None if words[at + 1:at + 2] == ["vsa"] else "input"
+            if kind and kind not in rows:
+                rows[kind] = line.words[at], line
+        if len(rows) == 2:
+            break
+    if len(rows) < 2:
+        raise TestFailure(f"could not find both the input's and the new layer's rows in the layer list "
+                          f"(found {sorted(rows)}; {shot})")
+    green = {}
+    for kind, (name, line) in rows.items():
+        middle = name.top + name.height / 2
+        green[kind] = green_pixels(session, shot, (name.left - 70, middle - 12, 66, 24), f"eye_{kind}")
+    log(f"layer list, green pixels left of the name: input {green['input']} ({rows['input'][1]}), "
+        f"new layer {green['output']} ({rows['output'][1]})")
+    if green["output"] < 10:
+        raise TestFailure(f"the new layer's eye is not open ({shot})")
+    if green["input"] >= 10:
+        raise TestFailure(f"the input layer '{base}' is still shown after Apply: its eye is open ({shot})")
+
+
+def run_filter_dialog(session, after_start=None):
+    """The whole way from starting MeshLab to the new layer, shown alone (the input hidden);
+    after_start(main window), if given, runs once the mesh is loaded (to install a plugin, say).
+    Last, a screenshot of what the user sees once the dialog is closed (for a person to look at)."""
     main = open_mesh(session)
-    found = apply_filter(session, main, *open_filter_dialog(session, main))
-    return main, found
+    if after_start:
+        after_start(main)
+    dialog = open_filter_dialog(session, main)
+    apply_filter(session, main, *dialog)
+    check_input_hidden(session, main, layer_name(session.args.mesh, session.args.k))
+    close = next((w for l in dialog[1] for w in l.words if w.text == "Close"), None)
+    if close:
+        session.click(close.center)
+        time.sleep(1)
+        session.shot("result")
 
 
 def main(description, run, add_arguments=None, default_meshlab=None):
