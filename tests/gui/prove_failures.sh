@@ -6,16 +6,17 @@
 #   param-renamed:  our plugin with "Random seed" patched to "Random sead" -> a parameter is missing
 #   apply-fails:    k = 0 typed in the dialog (the filter refuses) -> Apply adds no layer
 #   layer-renamed:  our plugin naming its layer "... VSX k=..."   -> no "VSA k=" layer
+#   input-shown:    MeshDocument::setVisible made a no-op (LD_PRELOAD), so Apply leaves the
+#                   input shown                                  -> the input's eye is open
 # gui_meshlab_filterplugin.py, the MeshLab 2025.07 application of scripts/setup_filterplugin.sh:
 #   fp-not-loadable:    a double-precision plugin in the float MeshLab's extra-plugins folder
 #                                                                -> MeshLab cannot load it
-#   fp-load-refused:    the same through Help > Plugin Info > Load Plugins -> refused, not copied
+#   fp-load-refused:    the same through Help > Plugin Info > Load Plugins -> refused
 #   fp-other-plugin:    a loadable plugin that is not ours (the host tests' probe) -> not in the menu
-#   fp-param-renamed, fp-apply-fails, fp-layer-renamed: as above, with our 2025.07 plugin
-#   fp-input-shown:     MeshDocument::setVisible made a no-op (LD_PRELOAD), so Apply leaves the
-#                       input shown                              -> the input's eye is open
+#   fp-param-renamed, fp-apply-fails, fp-layer-renamed, fp-input-shown: as above, with our
+#                       2025.07 plugin
 # Usage: tests/gui/prove_failures.sh [build dir]   (the cases of a MeshLab the build lacks are
-# skipped). Takes about four minutes; not part of ctest.
+# skipped). Takes about five minutes; not part of ctest.
 set -u
 here=$(cd "$(dirname "$0")" && pwd)
 build=$(cd "${1:-$here/../../build}" && pwd)
@@ -33,6 +34,12 @@ open(out, "wb").write(data.replace(old.encode(), new.encode()))
 PY
   echo "$2"
 }
+
+# MeshDocument::setVisible(int, bool), which the plugins call to hide the input (the same symbol in
+# MeshLab 2020.09 and 2025.07), doing nothing.
+no_set_visible=$work/no_set_visible.so
+echo 'extern "C" void _ZN12MeshDocument10setVisibleEib(void *, int, bool) {}' \
+  | g++ -shared -fPIC -x c++ - -o "$no_set_visible"
 
 failures=0
 expect_failure() {   # name, expected message, test script, test arguments...
@@ -79,6 +86,8 @@ if [ -x "$prefix/bin/meshlab" ]; then
     --meshlab "$prefix/bin/meshlab" --k 0
   expect_failure layer-renamed "no layer 'fandisk VSA k=40'" gui_filter_dialog.py --meshlab "$(make_prefix \
     layer-renamed "$(patched_plugin "$ours" "$work/layer-renamed/libfilter_vsa.so" "%1 VSA k=%2" "%1 VSX k=%2")")"
+  LD_PRELOAD=$no_set_visible expect_failure input-shown "is still shown after Apply" gui_filter_dialog.py \
+    --meshlab "$prefix/bin/meshlab"
 else
   echo "skip MeshLab 2020.09: no $prefix/bin/meshlab"
 fi
@@ -97,7 +106,7 @@ if [ -x "$app" ] && [ -f "$ours" ] && [ -f "$probes/libfilter_fp_probe_other_sca
     expect_failure "$name" "$expected" gui_meshlab_filterplugin.py --meshlab "$app" --version "$version" \
       --scalar float --plugin "$plugin" "$@"
   }
-  mkdir -p "$work/fp-param-renamed" "$work/fp-layer-renamed" "$work/fp-input-shown"
+  mkdir -p "$work/fp-param-renamed" "$work/fp-layer-renamed"
   # The probe, compiled for the double-precision MeshLab and named as ours: what a user gets who
   # picks the wrong archive.
   wrong=$work/libfilter_vsa.so
@@ -110,11 +119,7 @@ if [ -x "$app" ] && [ -f "$ours" ] && [ -f "$probes/libfilter_fp_probe_other_sca
   fp fp-apply-fails "opened a window 'Filter Failure'" "$ours" --k 0
   fp fp-layer-renamed "no layer 'fandisk VSA k=40'" \
     "$(patched_plugin "$ours" "$work/fp-layer-renamed/libfilter_vsa.so" "%1 VSA k=%2" "%1 VSX k=%2")"
-  # MeshDocument::setVisible(int, bool), which the plugin calls to hide the input, doing nothing.
-  echo 'extern "C" void _ZN12MeshDocument10setVisibleEib(void *, int, bool) {}' \
-    | g++ -shared -fPIC -x c++ - -o "$work/fp-input-shown/no_set_visible.so"
-  LD_PRELOAD=$work/fp-input-shown/no_set_visible.so \
-    fp fp-input-shown "is still shown after Apply" "$ours"
+  LD_PRELOAD=$no_set_visible fp fp-input-shown "is still shown after Apply" "$ours"
 else
   echo "skip MeshLab $version: no application ($app), plugin ($ours) or probe plugins in $probes"
 fi
