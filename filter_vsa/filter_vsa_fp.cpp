@@ -14,6 +14,9 @@ FilterVsaPlugin::FilterVsaPlugin()
 
 QString FilterVsaPlugin::pluginName() const { return "FilterVSA"; }
 
+// Plugin Information shows it; the default names MeshLab's own lab.
+QString FilterVsaPlugin::vendor() const { return "filter_vsa authors"; }
+
 QString FilterVsaPlugin::filterName(ActionIDType) const { return "Variational Shape Approximation"; }
 
 // pymeshlab's name; the default would be "variational_shape_approximation", and pymeshlab's own
@@ -100,6 +103,9 @@ std::map<std::string, QVariant> FilterVsaPlugin::apply(MeshDocument &md, const R
     // optional components (face colour) and updates box, normals and data mask.
     const QString name = ApproximationLayerName(input->label(), outcome.regionCount);
     MeshModel *output = md.addNewMesh(approximation, name, false);  // `input` stays valid
+    // addNewMesh marks per-vertex colour and quality as present, and MeshLab would then draw the
+    // layer in its (white) vertex colour instead of the regions' face colours.
+    output->clearDataMask(MeshModel::MM_VERTCOLOR | MeshModel::MM_VERTQUALITY);
     log(QString("VSA: added layer \"%1\"").arg(output->label()).toStdString());
     // A polygonal layer: MeshLab's OBJ and OFF writers (and pymeshlab's save_polygonal) then write
     // the regions as polygons, joined across the faux edges.

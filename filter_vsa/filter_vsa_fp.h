@@ -20,6 +20,7 @@ public:
     FilterVsaPlugin();
 
     QString pluginName() const override;
+    QString vendor() const override;
     QString filterName(ActionIDType filter) const override;
     QString pythonFilterName(ActionIDType filter) const override;
     QString filterInfo(ActionIDType filter) const override;

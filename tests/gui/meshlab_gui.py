@@ -14,6 +14,7 @@ Python 3 standard library only; needs Xvfb, xdotool, ImageMagick (import, conver
 tesseract (tesseract-ocr with its English data).
 """
 import argparse
+import colorsys
 import difflib
 import os
 import re
@@ -562,6 +563,36 @@ def green_pixels(session, png, box, name):
     return green
 
 
+def warm_pixels(session, png, box, name):
+    """How many pixels (of a quarter-size sample) of `box` in `png` are clearly coloured with a hue
+    from red to cyan: the regions' colours. MeshLab's background (blue to purple), a layer drawn
+    in white vertex colour and the grey of its shading have none. The crop is kept as <name>.png."""
+    x, y, w, h = (round(v) for v in box)
+    crop = session.artifacts / f"{name}.png"
+    subprocess.run(["convert", str(png), "-crop", f"{w}x{h}+{x}+{y}", "+repage", "-sample", "25%", str(crop)],
+                   check=True)
+    session.shots.append(crop)
+    text = subprocess.run(["convert", str(crop), "-depth", "8", "txt:-"], check=True,
+                          stdout=subprocess.PIPE, text=True).stdout
+    warm = 0
+    for row in text.splitlines()[1:]:
+        r, g, b = (float(v) / 255 for v in row.split("(", 1)[1].split(")", 1)[0].split(",")[:3])
+        hue, saturation, value = colorsys.rgb_to_hsv(r, g, b)
+        warm += saturation > 0.25 and value > 0.3 and hue < 190 / 360
+    return warm
+
+
+def check_regions_coloured(session, main, png):
+    """The new layer is drawn in its regions' face colours (not in a uniform vertex colour): the
+    3D view, left of the layer panel between the toolbars and the status text, shows them."""
+    height = session.args.height
+    box = (0, 0.08 * height, main.panel[0] - 10, 0.77 * height)
+    warm = warm_pixels(session, png, box, "view_colours")
+    log(f"3D view: {warm} sampled pixels in region colours (red to cyan)")
+    if warm < 200:
+        raise TestFailure(f"the new layer is not drawn in its regions' colours: {warm} coloured pixels ({png})")
+
+
 def check_input_hidden(session, main, expected):
     """The input's row in the layer list shows a closed eye and the new layer's an open one. Each
     row is found by OCR (the layer's name after its index); its eye is left of the index, so the
@@ -604,7 +635,8 @@ def check_input_hidden(session, main, expected):
 def run_filter_dialog(session, after_start=None):
     """The whole way from starting MeshLab to the new layer, shown alone (the input hidden);
     after_start(main window), if given, runs once the mesh is loaded (to install a plugin, say).
-    Last, a screenshot of what the user sees once the dialog is closed (for a person to look at)."""
+    Last, a screenshot of what the user sees once the dialog is closed, in which the new layer
+    must show its regions' colours."""
     main = open_mesh(session)
     if after_start:
         after_start(main)
@@ -615,7 +647,7 @@ def run_filter_dialog(session, after_start=None):
     if close:
         session.click(close.center)
         time.sleep(1)
-        session.shot("result")
+    check_regions_coloured(session, main, session.shot("result"))
 
 
 def main(description, run, add_arguments=None, default_meshlab=None):

@@ -73,5 +73,7 @@ mutate faces-precondition $fp "QAction *) const { return MeshModel::MM_NONE; }" 
   "test_bad_input_raises_our_message_and_changes_nothing\[point cloud"
 mutate not-polygonal-layer $fp "output->updateDataMask(MeshModel::MM_POLYGONAL);" "" \
   test_polygonal_output_marks_one_polygon_per_region
+mutate white-output $fp "    output->clearDataMask(MeshModel::MM_VERTCOLOR | MeshModel::MM_VERTQUALITY);" "" \
+  test_every_metric_and_initialization
 [ $failures -eq 0 ] && echo "all mutations detected" || echo "$failures mutation(s) not detected"
 exit $failures

@@ -46,6 +46,8 @@ def test_every_metric_and_initialization(fandisk, metric, init):
     assert output.label() == f"fandisk VSA k={k}"
     assert output.face_number() == figures["faces_out"] > 0
     assert output.vertex_number() == figures["vertices_out"]
+    # Face colours only: MeshLab draws a layer in its vertex colour when it has one.
+    assert output.has_face_color() and not output.has_vertex_color()
     assert 2 * k - 4 <= output.face_number() <= 20 * k  # a closed genus-0 surface of k planar regions
 
     # The input: region index as face quality, each region's colour; the output wears the same colours.
