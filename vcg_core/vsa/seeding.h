@@ -219,10 +219,11 @@ void InsertInRegion(const Graph &mesh, const Metric &metric, const FaceGeometry 
     lists.Relist(s, touched, faces);
 }
 
-/// One region per connected component, seeded at a random face of it, with that face's proxy.
+/// One region per connected component, seeded at a random face of it, with that face's proxy;
+/// errors and energies are left to be measured.
 template <class Graph, class Metric>
-void StartOnePerComponent(const Graph &mesh, const Metric &metric, const FaceGeometry &g, RegionState &s,
-                          SeedRandom &random)
+void PickOnePerComponent(const Graph &mesh, const Metric &metric, const FaceGeometry &g, RegionState &s,
+                         SeedRandom &random)
 {
     const int faceCount = mesh.FaceCount();
     std::vector<int> componentSize(mesh.componentCount, 0);
@@ -241,6 +242,14 @@ void StartOnePerComponent(const Graph &mesh, const Metric &metric, const FaceGeo
     s.partition.faceRegion = mesh.component;
     s.faceError.assign(faceCount, 0);
     s.regionEnergy.assign(mesh.componentCount, 0);
+}
+
+/// PickOnePerComponent, measured.
+template <class Graph, class Metric>
+void StartOnePerComponent(const Graph &mesh, const Metric &metric, const FaceGeometry &g, RegionState &s,
+                          SeedRandom &random)
+{
+    PickOnePerComponent(mesh, metric, g, s, random);
     MeasureRegions(metric, s);
 }
 
@@ -365,19 +374,30 @@ inline int PatchFaces(int faceCount, const SeedingGoal &goal)
     return faces >= kMinPatchFaces ? int(faces) : 1;
 }
 
-/// Hierarchical seeding on patches of about `patchFaces` faces (random seeds flooded once with
-/// their faces' planes, so patches keep to sharp edges), up to the goal's count or as many
-/// regions as the patches allow; then the regions are carried to the faces, refitted and
-/// relaxed once there. The rounds' floods and insertions thus touch patches, not faces.
+/// `patchCount` connected patches: one random face per component and random others, each
+/// flooded from its own face's plane once, so that patches mostly keep to one side of a crease.
+template <class Metric>
+Partition FloodPatches(const IndexedMesh &mesh, const Metric &metric, const FaceGeometry &g, int patchCount,
+                       SeedRandom &random, PartitionWorkspace<Metric> &ws)
+{
+    RegionState s;
+    PickOnePerComponent(mesh, metric, g, s, random);
+    AddRandomSeeds(metric, g, s, patchCount - s.RegionCount(), random);
+    FloodFromSeeds(mesh, metric, s, ws);
+    return std::move(s.partition);
+}
+
+/// Hierarchical seeding on patches of about `patchFaces` faces (FloodPatches), up to the
+/// goal's count or as many regions as the patches allow; then the regions are carried to the
+/// faces, refitted and relaxed once there. The rounds' floods and insertions thus touch
+/// patches, not faces.
 template <class Metric>
 void SeedOnPatches(const IndexedMesh &mesh, const Metric &metric, const FaceGeometry &g, RegionState &s,
                    const SeedingGoal &goal, int patchFaces, SeedRandom &random, PartitionWorkspace<Metric> &ws,
                    CallBackPos *cb)
 {
-    SeedingGoal patchGoal;
-    patchGoal.proxyCount = mesh.FaceCount() / patchFaces;
-    SeedRandomly(mesh, metric, g, s, patchGoal, random, ws);
-    const PatchGraph<Metric> graph = BuildPatchGraph(mesh, metric, std::move(s.partition));
+    const PatchGraph<Metric> graph =
+        BuildPatchGraph(mesh, metric, FloodPatches(mesh, metric, g, mesh.FaceCount() / patchFaces, random, ws));
     const PatchMetric<Metric> patchMetric(metric, graph, g.maxArea);
     PartitionWorkspace<PatchMetric<Metric>, NeighborSpan> patchWs;
     RegionState coarse;
@@ -389,10 +409,11 @@ void SeedOnPatches(const IndexedMesh &mesh, const Metric &metric, const FaceGeom
     s.partition.proxies = coarse.partition.proxies;
     s.partition.faceRegion.resize(mesh.FaceCount());
     for (int f = 0; f < mesh.FaceCount(); ++f) s.partition.faceRegion[f] = coarse.partition.faceRegion[graph.patchOf[f]];
+    s.faceError.resize(mesh.FaceCount());
     s.seeds.assign(coarse.RegionCount(), -1);
     s.regionEnergy.assign(coarse.RegionCount(), 0);
     FitRegions(metric, s);
-    Relax(mesh, metric, s, ws, 1);
+    LloydIteration(mesh, metric, s, ws);
 }
 
 }  // namespace detail
