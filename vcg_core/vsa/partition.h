@@ -153,8 +153,12 @@ private:
 };
 
 /// Scratch memory reused by every flood and growth, so that the hot loops never allocate.
-/// A workspace serves one mesh and one metric (its nodes copy their per-face data).
-template <class Metric>
+/// A workspace serves one face graph and one metric (its nodes copy their per-face data).
+/// The partitioning runs on any face graph: an IndexedMesh, whose faces have three neighbour
+/// slots, or a PatchGraph (patch_graph.h), whose nodes list their neighbours (`Neighbors`).
+/// A graph has FaceCount(), neighbors[f] (a range of faces, -1 for none), component and
+/// componentCount.
+template <class Metric, class Neighbors = std::array<int, 3>>
 struct PartitionWorkspace
 {
     /// Everything the flood reads about a face, together: popping a face and offering its
@@ -163,7 +167,7 @@ struct PartitionWorkspace
     {
         FloodQueue::Rank queuedRank;  ///< best rank queued for this face during a flood
         int region;                   ///< label during a flood: -1 while free; between floods >= 0 (a wall)
-        std::array<int, 3> neighbors;
+        Neighbors neighbors;
         typename Metric::FaceData data;
     };
     std::vector<Node> nodes;
@@ -177,8 +181,8 @@ struct PartitionWorkspace
 
 namespace detail {
 
-template <class Metric>
-void PrepareNodes(const IndexedMesh &mesh, const Metric &metric, PartitionWorkspace<Metric> &ws)
+template <class Graph, class Metric, class Neighbors>
+void PrepareNodes(const Graph &mesh, const Metric &metric, PartitionWorkspace<Metric, Neighbors> &ws)
 {
     if (int(ws.nodes.size()) == mesh.FaceCount()) return;
     ws.nodes.resize(mesh.FaceCount());
@@ -191,11 +195,11 @@ void PrepareNodes(const IndexedMesh &mesh, const Metric &metric, PartitionWorksp
 
 /// The flood proper, on nodes already marked: free ones with region -1 and no queued error.
 /// `seeds` lists (region, seed face) pairs by increasing region.
-template <class Metric>
+template <class Metric, class Neighbors>
 void Flood(const Metric &metric, const std::vector<Proxy> &proxies, const std::vector<std::pair<int, int>> &seeds,
-           PartitionWorkspace<Metric> &ws)
+           PartitionWorkspace<Metric, Neighbors> &ws)
 {
-    using Node = typename PartitionWorkspace<Metric>::Node;
+    using Node = typename PartitionWorkspace<Metric, Neighbors>::Node;
     auto &nodes = ws.nodes;
     FloodQueue &queue = ws.queue;
     queue.Reset(metric.ErrorScale());
@@ -243,9 +247,9 @@ bool TakeLabel(Node &node, int &label)
 /// face could never label it, so it is not queued at all: the labels are those of the flood
 /// that queues every candidate, with less work.
 /// Returns how many free faces no seed could reach (none when every component has a seed).
-template <class Metric>
-int FloodRegions(const IndexedMesh &mesh, const Metric &metric, const std::vector<Proxy> &proxies,
-                 const std::vector<int> &seeds, std::vector<int> &faceRegion, PartitionWorkspace<Metric> &ws)
+template <class Graph, class Metric, class Neighbors>
+int FloodRegions(const Graph &mesh, const Metric &metric, const std::vector<Proxy> &proxies,
+                 const std::vector<int> &seeds, std::vector<int> &faceRegion, PartitionWorkspace<Metric, Neighbors> &ws)
 {
     detail::PrepareNodes(mesh, metric, ws);
     for (int f = 0; f < mesh.FaceCount(); ++f) {
@@ -265,10 +269,10 @@ int FloodRegions(const IndexedMesh &mesh, const Metric &metric, const std::vecto
 /// pairs `seeds` (by increasing region, seeds among `faces`); every other face is a wall. Costs
 /// O(|faces| log |faces|), not a pass over the mesh. Returns how many of `faces` no seed
 /// reached (they keep -1 in faceRegion).
-template <class Metric>
-int FloodWithin(const IndexedMesh &mesh, const Metric &metric, const std::vector<Proxy> &proxies,
+template <class Graph, class Metric, class Neighbors>
+int FloodWithin(const Graph &mesh, const Metric &metric, const std::vector<Proxy> &proxies,
                 const std::vector<std::pair<int, int>> &seeds, const std::vector<int> &faces,
-                std::vector<int> &faceRegion, PartitionWorkspace<Metric> &ws)
+                std::vector<int> &faceRegion, PartitionWorkspace<Metric, Neighbors> &ws)
 {
     detail::PrepareNodes(mesh, metric, ws);
     for (int f : faces) {
@@ -331,16 +335,16 @@ void FitRegions(const Metric &metric, RegionState &s, const std::vector<char> &o
 
 /// Relabels every face by flooding from the current seeds with the current proxies. Every
 /// component must hold a seed. Leaves errors and energies to be measured.
-template <class Metric>
-void FloodFromSeeds(const IndexedMesh &mesh, const Metric &metric, RegionState &s, PartitionWorkspace<Metric> &ws)
+template <class Graph, class Metric, class Neighbors>
+void FloodFromSeeds(const Graph &mesh, const Metric &metric, RegionState &s, PartitionWorkspace<Metric, Neighbors> &ws)
 {
     std::fill(s.partition.faceRegion.begin(), s.partition.faceRegion.end(), -1);
     FloodRegions(mesh, metric, s.partition.proxies, s.seeds, s.partition.faceRegion, ws);
 }
 
 /// One Lloyd iteration: partition (flood) with the current proxies, then fit the proxies.
-template <class Metric>
-void LloydIteration(const IndexedMesh &mesh, const Metric &metric, RegionState &s, PartitionWorkspace<Metric> &ws)
+template <class Graph, class Metric, class Neighbors>
+void LloydIteration(const Graph &mesh, const Metric &metric, RegionState &s, PartitionWorkspace<Metric, Neighbors> &ws)
 {
     FloodFromSeeds(mesh, metric, s, ws);
     FitRegions(metric, s);
@@ -363,9 +367,9 @@ Proxy FitFace(const Metric &metric, const FaceGeometry &g, int face)
 /// appended. The taken faces are listed in ws.grown, the regions they came from in
 /// ws.grownFrom: the caller refits those (which also re-picks their seeds, possibly taken). A
 /// region that lost a band of faces may be left in pieces until the next flood.
-template <class Metric>
-int GrowRegion(const IndexedMesh &mesh, const Metric &metric, const FaceGeometry &g, RegionState &s, int seed,
-               std::vector<int> &regionSize, PartitionWorkspace<Metric> &ws)
+template <class Graph, class Metric, class Neighbors>
+int GrowRegion(const Graph &mesh, const Metric &metric, const FaceGeometry &g, RegionState &s, int seed,
+               std::vector<int> &regionSize, PartitionWorkspace<Metric, Neighbors> &ws)
 {
     const int region = s.RegionCount();
     const Proxy proxy = FitFace(metric, g, seed);

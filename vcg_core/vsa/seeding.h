@@ -1,9 +1,11 @@
-// Variational Shape Approximation for vcglib — initial proxies: random, farthest, hierarchical.
+// Variational Shape Approximation for vcglib — initial proxies: random, farthest, hierarchical
+// (on a patch graph first when the mesh is large for k).
 // SPDX-License-Identifier: GPL-3.0-or-later
 #ifndef VSA_SEEDING_H
 #define VSA_SEEDING_H
 
 #include <vsa/partition.h>
+#include <vsa/patch_graph.h>
 
 #include <wrap/callback.h>
 
@@ -16,6 +18,24 @@
 namespace vcg {
 namespace tri {
 namespace vsa {
+
+namespace detail {
+
+/// Multilevel hierarchical seeding's tuning (SeedHierarchically), in one place.
+/// From this many faces on, seeding starts on patches: below, seeding the faces takes about a
+/// second at most, and its energies are what the patches' are measured against.
+constexpr int kMultilevelFaces = 100000;
+/// Patches at most this big: a round then costs about 1/kMaxPatchFaces of one at full
+/// resolution, and the patches are still small beside the regions on the meshes it helps.
+constexpr int kMaxPatchFaces = 32;
+/// At least this many patches per region, so that regions' borders and energies on the patches
+/// are close to those on the faces, which the Lloyd iterations then refine; 32 cost twice the
+/// coarse rounds where faces per proxy are few, for no lower energy.
+constexpr int kPatchesPerRegion = 16;
+/// Smaller patches would save too little to be worth a coarse level: faces are seeded directly.
+constexpr int kMinPatchFaces = 4;
+
+}  // namespace detail
 
 enum class SeedingMethod
 {
@@ -33,6 +53,8 @@ struct SeedingGoal
     /// farthest seeding doubles the count. Seeding always ends with at least one, so that its
     /// partition is a flood's.
     int relaxations = 0;
+    /// Hierarchical seeding works on patches first for meshes with at least this many faces.
+    int multilevelFaces = detail::kMultilevelFaces;
 };
 
 /// Reproducible random numbers. std::mt19937_64's sequence is fixed by the C++ standard; the
@@ -63,8 +85,8 @@ inline void Progress(CallBackPos *cb, int done, int total)
     if (cb) cb(total > 0 ? std::min(100, int(100.0 * done / total)) : 100, "VSA: seeding proxies");
 }
 
-template <class Metric>
-void Relax(const IndexedMesh &mesh, const Metric &metric, RegionState &s, PartitionWorkspace<Metric> &ws,
+template <class Graph, class Metric, class Neighbors>
+void Relax(const Graph &mesh, const Metric &metric, RegionState &s, PartitionWorkspace<Metric, Neighbors> &ws,
            int iterations)
 {
     for (int i = 0; i < iterations; ++i) LloydIteration(mesh, metric, s, ws);
@@ -168,9 +190,9 @@ int BestRegion(const RegionState &s, const RegionFaces &lists, Score score)
 /// took faces from (refit, flood within their faces, refit). Like a global relaxation after
 /// each insertion it lets the next insertion see where the error now is, and it leaves those
 /// regions connected; unlike one, it costs the size of the regions touched.
-template <class Metric>
-void InsertInRegion(const IndexedMesh &mesh, const Metric &metric, const FaceGeometry &g, RegionState &s,
-                    PartitionWorkspace<Metric> &ws, RegionFaces &lists, int region)
+template <class Graph, class Metric, class Neighbors>
+void InsertInRegion(const Graph &mesh, const Metric &metric, const FaceGeometry &g, RegionState &s,
+                    PartitionWorkspace<Metric, Neighbors> &ws, RegionFaces &lists, int region)
 {
     int worst = -1;
     for (int f : lists.Of(region)) {
@@ -198,10 +220,11 @@ void InsertInRegion(const IndexedMesh &mesh, const Metric &metric, const FaceGeo
     lists.Relist(s, touched, faces);
 }
 
-/// One region per connected component, seeded at a random face of it, with that face's proxy.
-template <class Metric>
-void StartOnePerComponent(const IndexedMesh &mesh, const Metric &metric, const FaceGeometry &g, RegionState &s,
-                          SeedRandom &random)
+/// One region per connected component, seeded at a random face of it, with that face's proxy;
+/// errors and energies are left to be measured.
+template <class Graph, class Metric>
+void PickOnePerComponent(const Graph &mesh, const Metric &metric, const FaceGeometry &g, RegionState &s,
+                         SeedRandom &random)
 {
     const int faceCount = mesh.FaceCount();
     std::vector<int> componentSize(mesh.componentCount, 0);
@@ -220,6 +243,14 @@ void StartOnePerComponent(const IndexedMesh &mesh, const Metric &metric, const F
     s.partition.faceRegion = mesh.component;
     s.faceError.assign(faceCount, 0);
     s.regionEnergy.assign(mesh.componentCount, 0);
+}
+
+/// PickOnePerComponent, measured.
+template <class Graph, class Metric>
+void StartOnePerComponent(const Graph &mesh, const Metric &metric, const FaceGeometry &g, RegionState &s,
+                          SeedRandom &random)
+{
+    PickOnePerComponent(mesh, metric, g, s, random);
     MeasureRegions(metric, s);
 }
 
@@ -304,20 +335,18 @@ void SeedFarthest(const IndexedMesh &mesh, const Metric &metric, const FaceGeome
     if (!flooded) relax(std::max(1, goal.relaxations));
 }
 
-/// Hierarchical seeding: from a random face per component, rounds double the proxy count and
-/// relax. A round spreads its proxies over the regions in proportion to their energy, by
+namespace detail {
+
+/// Hierarchical seeding's rounds, from the regions of `s` on: each doubles the proxy count and
+/// relaxes. A round spreads its proxies over the regions in proportion to their energy, by
 /// D'Hondt's highest averages on the energies as they fall: each proxy goes to the region
 /// whose energy divided by one plus the proxies it already got this round is largest, at its
-/// worst face (as in farthest seeding). Seeds at the worst faces, with shares that follow the
-/// error as it drops, keep CAD shapes out of the poor minima where a fixed share per region
-/// (CGAL's error diffusion) leaves a region straddling a sharp edge.
-template <class Metric>
-void SeedHierarchically(const IndexedMesh &mesh, const Metric &metric, const FaceGeometry &g, RegionState &s,
-                        const SeedingGoal &goal, SeedRandom &random, PartitionWorkspace<Metric> &ws,
-                        CallBackPos *cb = nullptr)
+/// worst face (as in farthest seeding).
+template <class Graph, class Metric, class Neighbors>
+void DoublingRounds(const Graph &mesh, const Metric &metric, const FaceGeometry &g, RegionState &s,
+                    const SeedingGoal &goal, PartitionWorkspace<Metric, Neighbors> &ws, CallBackPos *cb)
 {
-    detail::StartOnePerComponent(mesh, metric, g, s, random);
-    detail::RegionFaces faces;
+    RegionFaces faces;
     while (s.RegionCount() < goal.proxyCount) {
         if (goal.targetEnergy > 0 && s.Energy() <= goal.targetEnergy) return;
         const int roundSize = std::min(s.RegionCount(), goal.proxyCount - s.RegionCount());
@@ -325,15 +354,86 @@ void SeedHierarchically(const IndexedMesh &mesh, const Metric &metric, const Fac
         std::vector<int> given(s.RegionCount(), 0);
         const auto share = [&](int r) { return s.regionEnergy[r] / (1 + given[r]); };
         for (int added = 0; added < roundSize; ++added) {
-            const int region = detail::BestRegion(s, faces, share);
+            const int region = BestRegion(s, faces, share);
             if (region < 0) break;  // every face is a seed
             ++given[region];
-            detail::InsertInRegion(mesh, metric, g, s, ws, faces, region);
+            InsertInRegion(mesh, metric, g, s, ws, faces, region);
             given.push_back(0);
         }
-        detail::Relax(mesh, metric, s, ws, std::max(1, goal.relaxations));
-        detail::Progress(cb, s.RegionCount(), goal.proxyCount);
+        Relax(mesh, metric, s, ws, std::max(1, goal.relaxations));
+        Progress(cb, s.RegionCount(), goal.proxyCount);
     }
+}
+
+/// Faces per patch for seeding `faceCount` faces towards `goal`, or 1 to seed the faces
+/// directly. With a target energy the count is unknown: patches as for few regions.
+inline int PatchFaces(int faceCount, const SeedingGoal &goal)
+{
+    if (faceCount < goal.multilevelFaces) return 1;
+    const int64_t regions = goal.targetEnergy > 0 ? 1 : std::max(1, goal.proxyCount);
+    const int64_t faces = std::min<int64_t>(kMaxPatchFaces, faceCount / (kPatchesPerRegion * regions));
+    return faces >= kMinPatchFaces ? int(faces) : 1;
+}
+
+/// `patchCount` connected patches: one random face per component and random others, each
+/// flooded from its own face's plane once, so that patches mostly keep to one side of a crease.
+template <class Metric>
+Partition FloodPatches(const IndexedMesh &mesh, const Metric &metric, const FaceGeometry &g, int patchCount,
+                       SeedRandom &random, PartitionWorkspace<Metric> &ws)
+{
+    RegionState s;
+    PickOnePerComponent(mesh, metric, g, s, random);
+    AddRandomSeeds(metric, g, s, patchCount - s.RegionCount(), random);
+    FloodFromSeeds(mesh, metric, s, ws);
+    return std::move(s.partition);
+}
+
+/// Hierarchical seeding on patches of about `patchFaces` faces (FloodPatches), up to the
+/// goal's count or as many regions as the patches allow; then the regions are carried to the
+/// faces, refitted and relaxed once there. The rounds' floods and insertions thus touch
+/// patches, not faces.
+template <class Metric>
+void SeedOnPatches(const IndexedMesh &mesh, const Metric &metric, const FaceGeometry &g, RegionState &s,
+                   const SeedingGoal &goal, int patchFaces, SeedRandom &random, PartitionWorkspace<Metric> &ws,
+                   CallBackPos *cb)
+{
+    const PatchGraph<Metric> graph =
+        BuildPatchGraph(mesh, metric, FloodPatches(mesh, metric, g, mesh.FaceCount() / patchFaces, random, ws));
+    const PatchMetric<Metric> patchMetric(metric, graph, g.maxArea);
+    PartitionWorkspace<PatchMetric<Metric>, NeighborSpan> patchWs;
+    RegionState coarse;
+    SeedingGoal coarseGoal = goal;
+    coarseGoal.proxyCount = std::min(goal.proxyCount, graph.FaceCount() / kPatchesPerRegion);
+    StartOnePerComponent(graph, patchMetric, graph.geometry, coarse, random);
+    DoublingRounds(graph, patchMetric, graph.geometry, coarse, coarseGoal, patchWs, cb);
+
+    s.partition.proxies = coarse.partition.proxies;
+    s.partition.faceRegion.resize(mesh.FaceCount());
+    for (int f = 0; f < mesh.FaceCount(); ++f) s.partition.faceRegion[f] = coarse.partition.faceRegion[graph.patchOf[f]];
+    s.faceError.resize(mesh.FaceCount());
+    s.seeds.assign(coarse.RegionCount(), -1);
+    s.regionEnergy.assign(coarse.RegionCount(), 0);
+    FitRegions(metric, s);
+    LloydIteration(mesh, metric, s, ws);
+}
+
+}  // namespace detail
+
+/// Hierarchical seeding: from a random face per component, rounds double the proxy count and
+/// relax (detail::DoublingRounds). Seeds at the worst faces, with shares that follow the
+/// error as it drops, keep CAD shapes out of the poor minima where a fixed share per region
+/// (CGAL's error diffusion) leaves a region straddling a sharp edge. When the mesh has many
+/// faces per proxy, the rounds run on a graph of small patches first (detail::SeedOnPatches),
+/// and on the faces only for what the patches could not reach.
+template <class Metric>
+void SeedHierarchically(const IndexedMesh &mesh, const Metric &metric, const FaceGeometry &g, RegionState &s,
+                        const SeedingGoal &goal, SeedRandom &random, PartitionWorkspace<Metric> &ws,
+                        CallBackPos *cb = nullptr)
+{
+    const int patchFaces = detail::PatchFaces(mesh.FaceCount(), goal);
+    if (patchFaces > 1) detail::SeedOnPatches(mesh, metric, g, s, goal, patchFaces, random, ws, cb);
+    else detail::StartOnePerComponent(mesh, metric, g, s, random);
+    detail::DoublingRounds(mesh, metric, g, s, goal, ws, cb);
 }
 
 /// Dispatches to the chosen seeding method.

@@ -1,0 +1,146 @@
+// Variational Shape Approximation for vcglib — the patch graph: faces grouped into small
+// connected patches with summed moments, so that seeding can work on a graph tens of times
+// smaller than the mesh and still measure every partition's energy exactly.
+// SPDX-License-Identifier: GPL-3.0-or-later
+#ifndef VSA_PATCH_GRAPH_H
+#define VSA_PATCH_GRAPH_H
+
+#include <vsa/face_geometry.h>
+#include <vsa/indexed_mesh.h>
+#include <vsa/proxy.h>
+
+#include <algorithm>
+#include <vector>
+
+namespace vcg {
+namespace tri {
+namespace vsa {
+
+/// A node's neighbours in a PatchGraph: a range of its adjacency list.
+struct NeighborSpan
+{
+    const int *first = nullptr;
+    const int *last = nullptr;
+    const int *begin() const { return first; }
+    const int *end() const { return last; }
+};
+
+/// Adjacency lists in one array: node p's neighbours are list[offset[p]] to list[offset[p + 1]].
+struct AdjacencyLists
+{
+    std::vector<int> offset{0};
+    std::vector<int> list;
+    NeighborSpan operator[](int node) const
+    {
+        return {list.data() + offset[node], list.data() + offset[node + 1]};
+    }
+};
+
+/// Faces grouped into connected patches: a face graph (see PartitionWorkspace) whose nodes,
+/// counted by FaceCount(), are the patches, adjacent where two of their faces share an edge.
+template <class Metric>
+struct PatchGraph
+{
+    std::vector<int> patchOf;                      ///< per face of the mesh
+    std::vector<typename Metric::Moments> moments;  ///< per patch: its faces' moments, summed
+    AdjacencyLists neighbors;
+    std::vector<int> component;  ///< per patch: the connected component of its faces
+    int componentCount = 0;
+    /// Per patch, only centroid and normal: the plane FitFace falls back on when the patch's
+    /// moments admit no fit (zero area, or normals that cancel out).
+    FaceGeometry geometry;
+
+    int FaceCount() const { return int(moments.size()); }
+};
+
+/// The patch graph of `patches`, a partition of `mesh` into connected regions (as a flood
+/// leaves them); each patch's moments are taken about its proxy's point, and its proxy's
+/// plane is its fallback.
+template <class Metric>
+PatchGraph<Metric> BuildPatchGraph(const IndexedMesh &mesh, const Metric &metric, Partition patches)
+{
+    PatchGraph<Metric> graph;
+    const int patchCount = int(patches.proxies.size());
+    graph.patchOf = std::move(patches.faceRegion);
+    graph.geometry.centroid.resize(patchCount);
+    graph.geometry.normal.resize(patchCount);
+    for (int p = 0; p < patchCount; ++p) {
+        graph.moments.push_back(metric.EmptyMoments(patches.proxies[p].point));
+        graph.geometry.centroid[p] = patches.proxies[p].point;
+        graph.geometry.normal[p] = patches.proxies[p].normal;
+    }
+    const std::vector<int> &patchOf = graph.patchOf;
+    graph.component.resize(patchCount);
+    graph.componentCount = mesh.componentCount;
+    for (int f = 0; f < mesh.FaceCount(); ++f) {
+        metric.Add(graph.moments[patchOf[f]], f);
+        graph.component[patchOf[f]] = mesh.component[f];
+    }
+
+    // Every edge between two patches, bucketed by patch, then each bucket sorted and deduplicated.
+    std::vector<int> &offset = graph.neighbors.offset, &list = graph.neighbors.list;
+    offset.assign(patchCount + 1, 0);
+    const auto forEachCrossing = [&](auto visit) {
+        for (int f = 0; f < mesh.FaceCount(); ++f)
+            for (int g : mesh.neighbors[f])
+                if (g >= 0 && patchOf[g] != patchOf[f]) visit(patchOf[f], patchOf[g]);
+    };
+    forEachCrossing([&](int p, int) { ++offset[p + 1]; });
+    for (int p = 0; p < patchCount; ++p) offset[p + 1] += offset[p];
+    list.resize(offset[patchCount]);
+    std::vector<int> fill(offset.begin(), offset.end() - 1);
+    forEachCrossing([&](int p, int q) { list[fill[p]++] = q; });
+    int kept = 0;  // the lists move down as duplicates go; writes never pass reads
+    for (int p = 0; p < patchCount; ++p) {
+        const int first = offset[p], last = offset[p + 1];
+        std::sort(list.begin() + first, list.begin() + last);
+        offset[p] = kept;
+        for (int i = first; i < last; ++i)
+            if (i == first || list[i] != list[kept - 1]) list[kept++] = list[i];
+    }
+    offset[patchCount] = kept;
+    list.resize(kept);
+    list.shrink_to_fit();
+    return graph;
+}
+
+/// A metric over a PatchGraph's patches: a patch's error to a proxy is the sum of its faces'
+/// errors, which the summed moments give exactly (Metric::Energy), so the partitioning code
+/// runs unchanged on patches and its energies are those of the faces.
+template <class Metric>
+class PatchMetric
+{
+public:
+    using Moments = typename Metric::Moments;
+    using FaceData = Moments;
+
+    /// `faceMaxArea`: the mesh's largest face area, to which Metric::ErrorScale() is relative.
+    PatchMetric(const Metric &metric, const PatchGraph<Metric> &graph, double faceMaxArea)
+        : metric_(metric), moments_(&graph.moments), errorScale_(metric.ErrorScale())
+    {
+        double maxArea = 0;
+        for (const Moments &m : graph.moments) maxArea = std::max(maxArea, m.area);
+        if (faceMaxArea > 0) errorScale_ *= maxArea / faceMaxArea;
+    }
+
+    FaceData Data(int patch) const { return (*moments_)[patch]; }
+    double Error(const FaceData &d, const Proxy &p) const { return metric_.Energy(d, p); }
+    double Error(int patch, const Proxy &p) const { return metric_.Energy((*moments_)[patch], p); }
+    double ErrorScale() const { return errorScale_; }
+    Moments EmptyMoments(const Point3d &reference) const { return metric_.EmptyMoments(reference); }
+    void Add(Moments &m, int patch) const { metric_.Add(m, (*moments_)[patch]); }
+    void Add(Moments &m, const Moments &other) const { metric_.Add(m, other); }
+    Proxy Fit(const Moments &m, const Proxy &fallback) const { return metric_.Fit(m, fallback); }
+    double Energy(const Moments &m, const Proxy &p) const { return metric_.Energy(m, p); }
+
+private:
+    Metric metric_;
+    const std::vector<Moments> *moments_;
+    double errorScale_;
+};
+
+}  // namespace vsa
+}  // namespace tri
+}  // namespace vcg
+
+#endif  // VSA_PATCH_GRAPH_H
