@@ -5,7 +5,10 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <limits>
 #include <string>
+#include <vector>
 
 namespace {
 
@@ -77,6 +80,52 @@ TEST(ApproximateShape, RefusesAnUnorientedMeshWithARepeatedVertexFaceToo)
     EXPECT_FALSE(r.ok);
     EXPECT_NE(r.error.find("not consistently oriented (3 edges"), std::string::npos) << r.error;
     EXPECT_EQ(out.FN(), 0);
+}
+
+/// Every output coordinate finite, and the report saying so.
+void ExpectFiniteOutput(const TMesh &out, const ShapeApproximationResult &r)
+{
+    for (const auto &v : out.vert)
+        for (int i = 0; i < 3; ++i) EXPECT_TRUE(std::isfinite(v.cP()[i])) << "vertex " << (&v - &out.vert[0]);
+    EXPECT_EQ(r.meshing.validity.nonFiniteVertices, 0);
+}
+
+/// An open triangular prism around 1e37 with a corner at z = FLT_MAX (k=3, L2, random seeding,
+/// anchors projected): projecting that corner on the planes took it beyond FLT_MAX, and the
+/// float output got an infinite coordinate while the report said valid.
+TEST(ApproximateShape, ProjectedAnchorsStayWithinTheFloatRange)
+{
+    const float s = std::ldexp(1.f, 121), top = std::numeric_limits<float>::max();
+    TMesh prism, out;
+    vsa_test::BuildFromLists(prism,
+                             {{0, -3 * s, s}, {0, 2 * s, 3 * s}, {0, 3 * s, -s},
+                              {3 * s, -3 * s, top}, {3 * s, 2 * s, 3 * s}, {3 * s, 3 * s, -s}},
+                             {{0, 1, 4}, {0, 4, 3}, {1, 2, 5}, {1, 5, 4}, {2, 0, 3}, {2, 3, 5}});
+    ShapeApproximationParam param;
+    param.partition.proxyCount = 3;
+    param.partition.metric = MetricKind::L2;
+    param.partition.init = SeedingMethod::Random;
+    param.partition.randomSeed = 46;
+    const ShapeApproximationResult r = ApproximateShape(prism, out, param);
+    ASSERT_TRUE(r.ok) << r.error;
+    ExpectFiniteOutput(out, r);
+    EXPECT_TRUE(r.meshing.validity.IsValid()) << r.meshing.validity.Summary();
+}
+
+/// A unit square flat in the plane z = 1e12 (or 1e20), k=1: the grids' boxes kept no thickness
+/// there, and cell indices came out of 0 / 0 (undefined behaviour, caught under UBSan).
+TEST(ApproximateShape, FlatSquareFarFromTheOrigin)
+{
+    for (float z : {1e12f, 1e20f}) {
+        TMesh square, out;
+        vsa_test::BuildFromLists(square, {{0, 0, z}, {1, 0, z}, {1, 1, z}, {0, 1, z}}, {{0, 1, 2}, {0, 2, 3}});
+        const ShapeApproximationResult r = Approximate(square, out, 1);
+        ASSERT_TRUE(r.ok) << r.error;
+        EXPECT_EQ(out.FN(), 2);
+        EXPECT_EQ(out.VN(), 4);
+        ExpectFiniteOutput(out, r);
+        EXPECT_TRUE(r.meshing.validity.IsValid()) << r.meshing.validity.Summary();
+    }
 }
 
 }  // namespace

@@ -32,10 +32,11 @@ struct MeshValidity : MeshDiagnostics
     int selfIntersections = 0;    ///< pairs of faces that meet beyond their shared vertices; -1 if not counted
     int eulerCharacteristic = 0;  ///< V - E + F
 
-    /// Manifold, oriented, and free of degenerate, duplicate and self-intersecting faces.
+    /// Finite, manifold, oriented, and free of degenerate, duplicate and self-intersecting faces.
     bool IsValid() const
     {
-        return IsTwoManifold() && IsOriented() && degenerateFaces == 0 && duplicateFaces == 0 && selfIntersections <= 0;
+        return nonFiniteVertices == 0 && IsTwoManifold() && IsOriented() && degenerateFaces == 0 &&
+               duplicateFaces == 0 && selfIntersections <= 0;
     }
 
     std::string Summary() const

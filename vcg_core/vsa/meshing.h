@@ -17,6 +17,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <memory>
 #include <sstream>
 #include <string>
@@ -344,7 +345,7 @@ MeshingPass RunMeshingPass(const MeshingSurface &s, const std::vector<Proxy> &pr
     pass.polygonAt.resize(s.CellCount());
     for (int c = 0; c < s.CellCount(); ++c) pass.polygonAt[c] = AnchorPositionsInLoop(s, c, anchors);
     pass.positions = PlaceAnchors(s, anchors, pass.polygons, proxies, param.projectAnchors, param.maxAnchorMove,
-                                  pinnedAnchors);
+                                  double(std::numeric_limits<typename CoordType::ScalarType>::max()), pinnedAnchors);
     for (int v : anchors.vertexOfAnchor) pass.pinnedAnchors += pinnedAnchors[v];
     for (Point3d &p : pass.positions) p = AsWritten<CoordType>(p);
     pass.vertexSource = anchors.vertexOfAnchor;
@@ -1102,6 +1103,11 @@ MeshingReport BuildApproximatingMesh(const IndexedMesh &in, const Partition &par
         }
     }
 
+    // Output vertices are input vertices, points between them, and anchors that PlaceAnchors kept
+    // within the output's range; an input beyond that range (in double, written to float) is not.
+    auto finite = [](const Point3d &p) { return std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]); };
+    if (!std::all_of(pass.positions.begin(), pass.positions.end(), finite))
+        return fail("an output vertex has a coordinate that the output mesh's scalar cannot hold");
     if (cb) cb(80, "VSA meshing: writing the mesh");
     auto vertex = Allocator<OutMeshType>::AddVertices(out, pass.positions.size());
     for (const Point3d &p : pass.positions) (vertex++)->P() = CoordType::Construct(p);
