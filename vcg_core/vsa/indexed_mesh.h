@@ -210,6 +210,25 @@ inline void LabelComponents(IndexedMesh &im)
     }
 }
 
+/// Per face: whether it is degenerate, with no plane to test: it repeats a vertex, its area is
+/// tiny relative to the box of the finite vertices (so that a millimetre and a kilometre model
+/// agree), or a corner is not finite or its area overflows (an infinite box has no grid).
+inline std::vector<char> DegenerateFaceMask(const IndexedMesh &im)
+{
+    Box3d box;
+    for (const Point3d &p : im.positions)
+        if (std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2])) box.Add(p);
+    const double tinyArea = 1e-14 * box.SquaredDiag();
+    std::vector<char> degenerate(im.faces.size(), 0);
+    for (size_t f = 0; f < im.faces.size(); ++f) {
+        const auto &t = im.faces[f];
+        const double doubleArea =
+            ((im.positions[t[1]] - im.positions[t[0]]) ^ (im.positions[t[2]] - im.positions[t[0]])).Norm();
+        degenerate[f] = RepeatsVertex(t) || !(doubleArea > 2 * tinyArea) || !std::isfinite(doubleArea);
+    }
+    return degenerate;
+}
+
 }  // namespace detail
 
 /// Builds the flat snapshot of `m` and reports what is unusual about it. Deleted faces and
@@ -243,19 +262,10 @@ IndexedMesh BuildIndexedMesh(const MeshType &m, MeshDiagnostics *diagnostics = n
     for (size_t vi = 0; vi < m.vert.size(); ++vi)
         if (!m.vert[vi].IsD() && vertexIndex[vi] < 0) ++diag.unreferencedVertices;
 
-    Box3d box;
-    for (const Point3d &p : im.positions) {
-        if (std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2])) box.Add(p);
-        else ++diag.nonFiniteVertices;
-    }
-    // Relative to the model's size, so that a millimetre and a kilometre model agree.
-    const double tinyArea = 1e-14 * box.SquaredDiag();
-    for (const auto &t : im.faces) {
-        const double doubleArea =
-            ((im.positions[t[1]] - im.positions[t[0]]) ^ (im.positions[t[2]] - im.positions[t[0]])).Norm();
-        if (RepeatsVertex(t) || !(doubleArea > 2 * tinyArea))
-            ++diag.degenerateFaces;
-    }
+    for (const Point3d &p : im.positions)
+        if (!(std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]))) ++diag.nonFiniteVertices;
+    const std::vector<char> degenerate = detail::DegenerateFaceMask(im);
+    diag.degenerateFaces = int(std::count(degenerate.begin(), degenerate.end(), 1));
 
     detail::LinkFaces(im, diag);
     diag.nonManifoldVertices = detail::CountNonManifoldVertices(im);

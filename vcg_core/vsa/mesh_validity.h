@@ -410,23 +410,6 @@ double SavedCoordinateClearance(const std::vector<Point3d> &positions)
     return std::min(2 * std::sqrt(3.0) * perCoordinate, 1e-5 * box.Diag());
 }
 
-/// Same criterion as BuildIndexedMesh's degenerate count; such faces have no plane to test.
-inline std::vector<char> DegenerateFaceMask(const IndexedMesh &im)
-{
-    Box3d box;
-    for (const Point3d &p : im.positions)
-        if (std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2])) box.Add(p);
-    const double tinyArea = 1e-14 * box.SquaredDiag();
-    std::vector<char> degenerate(im.faces.size(), 0);
-    for (size_t f = 0; f < im.faces.size(); ++f) {
-        const auto &t = im.faces[f];
-        const double doubleArea =
-            ((im.positions[t[1]] - im.positions[t[0]]) ^ (im.positions[t[2]] - im.positions[t[0]])).Norm();
-        degenerate[f] = RepeatsVertex(t) || !(doubleArea > 2 * tinyArea);
-    }
-    return degenerate;
-}
-
 /// ShapeOfFace of every face of `im` not flagged in `degenerate`.
 inline std::vector<FaceShape> ShapesOfFaces(const IndexedMesh &im, const std::vector<char> &degenerate)
 {
