@@ -733,7 +733,7 @@ public:
         }
         if (!freshFaces.empty() && !grid_) {
             shape_ = ShapesOfFaces(in_, Degenerate());
-            grid_ = std::make_unique<SurfaceGrid>(in_.positions, in_.faces, Degenerate());
+            grid_ = std::make_unique<SurfaceGrid>(in_.positions, in_.faces, Degenerate(), PairGridMargin(in_, 0));
         }
         std::vector<int> metFrom(freshFaces.empty() ? 0 : in_.FaceCount(), -1);
         for (int f : freshFaces) {
