@@ -112,6 +112,23 @@ TEST(ApproximateShape, ProjectedAnchorsStayWithinTheFloatRange)
     EXPECT_TRUE(r.meshing.validity.IsValid()) << r.meshing.validity.Summary();
 }
 
+/// Coordinates beyond the float range (a double mesh, pymeshlab's) are refused: areas and moments
+/// could overflow, and a float output could not hold them.
+TEST(ApproximateShape, RefusesCoordinatesBeyondTheFloatRange)
+{
+    vsa_test::BareMesh tetrahedron;
+    const std::vector<vcg::Point3d> coords = {{0, 0, 0}, {1e39, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+    vcg::tri::BuildMeshFromCoordVectorIndexVector(
+        tetrahedron, coords, std::vector<vcg::Point3i>{{0, 2, 1}, {0, 1, 3}, {1, 2, 3}, {0, 3, 2}});
+    TMesh out;
+    ShapeApproximationParam param;
+    param.partition.proxyCount = 4;
+    const ShapeApproximationResult r = ApproximateShape(tetrahedron, out, param);
+    EXPECT_FALSE(r.ok);
+    EXPECT_NE(r.error.find("(the float range)"), std::string::npos) << r.error;
+    EXPECT_EQ(out.FN(), 0);
+}
+
 /// A unit square flat in the plane z = 1e12 (or 1e20), k=1: the grids' boxes kept no thickness
 /// there, and cell indices came out of 0 / 0 (undefined behaviour, caught under UBSan).
 TEST(ApproximateShape, FlatSquareFarFromTheOrigin)
