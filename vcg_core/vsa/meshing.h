@@ -409,7 +409,10 @@ struct PassDefects
     };
     std::vector<Crossing> crossings;
     std::vector<char> degenerate;  ///< per face of the pass's output: DegenerateFaceMask
-    size_t Count() const { return intersections.size() + closePairs.size() + crossings.size(); }
+    /// Faces flagged in `degenerate`: anchors projected onto one point (maxAnchorMove = 1 on a
+    /// flat wedge put two at the same place), whose faces the next pass pins.
+    size_t degenerateFaces = 0;
+    size_t Count() const { return intersections.size() + closePairs.size() + crossings.size() + degenerateFaces; }
     /// Whether some faces meet or come too close: what halving, keeping input faces and carving
     /// work against.
     bool HasPairs() const { return !intersections.empty() || !closePairs.empty(); }
@@ -481,6 +484,7 @@ inline PassDefects FindDefects(const MeshingPass &pass, double clearance, const 
     output.positions = pass.positions;
     output.faces = pass.triangles;
     defects.degenerate = DegenerateFaceMask(output);
+    defects.degenerateFaces = size_t(std::count(defects.degenerate.begin(), defects.degenerate.end(), 1));
     std::vector<char> fresh;  // all, without `previous`
     std::vector<int> repeatOf;
     if (previous) {
@@ -553,7 +557,7 @@ inline std::pair<int, double> ChainSplit(const MeshingSurface &s, const MeshingP
 /// the chord-edge whose chain strays farthest relative to its length (or the first chain of
 /// the cell's polygon with a vertex to spare, when none of the face's chords has one) gets one
 /// too, and the face's anchors are pinned to their input vertices; so do the faces of close
-/// pairs. Returns how many anchors were added or pinned.
+/// pairs and degenerate faces. Returns how many anchors were added or pinned.
 inline int RespondToDefects(const MeshingSurface &s, const MeshingPass &pass, const PassDefects &defects,
                             std::vector<char> &requiredAnchors, std::vector<char> &pinnedAnchors)
 {
@@ -573,6 +577,8 @@ inline int RespondToDefects(const MeshingSurface &s, const MeshingPass &pass, co
 
     std::vector<int> offending;
     defects.ForEachPair([&](int f, int g) { offending.push_back(f), offending.push_back(g); });
+    for (size_t f = 0; f < defects.degenerate.size(); ++f)
+        if (defects.degenerate[f]) offending.push_back(int(f));
     std::sort(offending.begin(), offending.end());
     offending.erase(std::unique(offending.begin(), offending.end()), offending.end());
     // Per output vertex, its position in the polygon of the cell at hand, and that cell's first
