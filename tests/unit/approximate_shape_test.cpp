@@ -145,4 +145,36 @@ TEST(ApproximateShape, FlatSquareFarFromTheOrigin)
     }
 }
 
+/// Deleted faces and vertices, as MeshLab leaves them before compacting, are left out: the
+/// output is the compact mesh's, and deleted faces have no region.
+TEST(ApproximateShape, DeletedElementsAreLeftOut)
+{
+    TMesh compact, withDeleted, out, outOfCompact;
+    vsa_test::MakeTessellatedCube(compact, 3);
+    vsa_test::MakeTessellatedCube(withDeleted, 3);
+    auto extra = vcg::tri::Allocator<TMesh>::AddVertices(withDeleted, 2);
+    extra[0].P() = vcg::Point3f(5, 5, 5);
+    extra[1].P() = vcg::Point3f(std::numeric_limits<float>::quiet_NaN(), 0, 0);
+    vcg::tri::Allocator<TMesh>::AddFace(withDeleted, &withDeleted.vert[0], &withDeleted.vert[1],
+                                         &withDeleted.vert[withDeleted.vert.size() - 2]);
+    vcg::tri::Allocator<TMesh>::DeleteFace(withDeleted, withDeleted.face.back());
+    vcg::tri::Allocator<TMesh>::DeleteFace(withDeleted, withDeleted.face[7]);
+    vcg::tri::Allocator<TMesh>::DeleteVertex(withDeleted, withDeleted.vert.back());
+    vcg::tri::Allocator<TMesh>::DeleteVertex(withDeleted, withDeleted.vert[withDeleted.vert.size() - 2]);
+    vcg::tri::Allocator<TMesh>::DeleteFace(compact, compact.face[7]);
+    vcg::tri::Allocator<TMesh>::CompactEveryVector(compact);
+
+    const ShapeApproximationResult r = Approximate(withDeleted, out, 6);
+    const ShapeApproximationResult rc = Approximate(compact, outOfCompact, 6);
+    ASSERT_TRUE(r.ok) << r.error;
+    ASSERT_TRUE(rc.ok) << rc.error;
+    EXPECT_EQ(r.input.faces, compact.FN());
+    ASSERT_EQ(out.VN(), outOfCompact.VN());
+    ASSERT_EQ(out.FN(), outOfCompact.FN());
+    for (int v = 0; v < out.VN(); ++v) EXPECT_EQ(out.vert[v].cP(), outOfCompact.vert[v].cP());
+    ASSERT_EQ(r.inputFaceRegion.size(), withDeleted.face.size());
+    for (size_t f = 0; f < withDeleted.face.size(); ++f)
+        EXPECT_EQ(r.inputFaceRegion[f] < 0, withDeleted.face[f].IsD()) << "face " << f;
+}
+
 }  // namespace
