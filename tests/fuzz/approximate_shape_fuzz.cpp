@@ -110,14 +110,33 @@ void DecodeMesh(Reader &in, double scale, const double offset[3], MeshType &m)
     }
 }
 
+/// Whether `m` is valid, free of self-intersections, and has no face within 1e4 of the area under
+/// which the validity check calls a face degenerate (1e-14 of the squared diagonal): a triangle
+/// of the output can be thinner than the input's, and on a face 1e13 times longer than wide that
+/// was enough to fall under it.
+template <class MeshType>
+bool ClearlyValid(const MeshType &m)
+{
+    const MeshValidity validity = CheckMeshValidity(m);
+    if (!validity.IsValid() || validity.selfIntersections != 0) return false;
+    const IndexedMesh im = BuildIndexedMesh(m);
+    vcg::Box3d box;
+    for (const vcg::Point3d &p : im.positions) box.Add(p);
+    for (const auto &t : im.faces) {
+        const auto &P = im.positions;
+        if (((P[t[1]] - P[t[0]]) ^ (P[t[2]] - P[t[0]])).Norm() < 1e-10 * box.SquaredDiag()) return false;
+    }
+    return true;
+}
+
 /// What a caller relies on: the input as it was; on failure a reason and nothing written; on
 /// success a compact output with sane indices and finite coordinates, labels and sizes that
-/// match it, a report whose validity is the output's, and for a valid input (`inputValidity`:
-/// the input's, before the run) an output that is valid but for self-intersections, which the
+/// match it, a report whose validity is the output's, and for a clearly valid input (see
+/// ClearlyValid, before the run) an output that is valid but for self-intersections, which the
 /// repair removes from real meshes but not from every input (the report counts them).
 template <class MeshType>
-void Check(const MeshType &in, const std::vector<typename MeshType::CoordType> &inputCoords,
-           const MeshValidity &inputValidity, const ShapeApproximationResult &r, const MeshType &out)
+void Check(const MeshType &in, const std::vector<typename MeshType::CoordType> &inputCoords, bool inputClearlyValid,
+           const ShapeApproximationResult &r, const MeshType &out)
 {
     Require(in.vert.size() == inputCoords.size(), "input vertex count changed");
     for (size_t v = 0; v < in.vert.size(); ++v)
@@ -161,7 +180,7 @@ void Check(const MeshType &in, const std::vector<typename MeshType::CoordType> &
     Require(reported.duplicateFaces == actual.duplicateFaces, "duplicate faces misreported");
     Require(reported.selfIntersections == actual.selfIntersections, "self-intersections misreported");
     Require(reported.IsValid() == actual.IsValid(), "validity misreported");
-    if (inputValidity.IsValid() && inputValidity.selfIntersections == 0)
+    if (inputClearlyValid)
         Require(reported.IsTwoManifold() && reported.IsOriented() && reported.degenerateFaces == 0 &&
                     reported.duplicateFaces == 0,
                 "invalid output of a valid input");
@@ -174,9 +193,9 @@ void Run(Reader &in, const ShapeApproximationParam &param, double scale, const d
     DecodeMesh(in, scale, offset, mesh);
     std::vector<typename MeshType::CoordType> coords;
     for (const auto &v : mesh.vert) coords.push_back(v.cP());
-    const MeshValidity inputValidity = CheckMeshValidity(mesh);
+    const bool clearlyValid = ClearlyValid(mesh);
     const ShapeApproximationResult r = ApproximateShape(mesh, out, param);
-    Check(mesh, coords, inputValidity, r, out);
+    Check(mesh, coords, clearlyValid, r, out);
 }
 
 }  // namespace
