@@ -38,6 +38,18 @@ struct IndexedMesh
     int VertexCount() const { return int(positions.size()); }
 };
 
+/// Whether the three coordinates of p are finite.
+inline bool IsFinite(const Point3d &p) { return std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]); }
+
+/// The box of the finite points among `positions`.
+inline Box3d FiniteBox(const std::vector<Point3d> &positions)
+{
+    Box3d box;
+    for (const Point3d &p : positions)
+        if (IsFinite(p)) box.Add(p);
+    return box;
+}
+
 /// Whether triangle t uses a vertex twice: it has no area and no edges of its own.
 inline bool RepeatsVertex(const std::array<int, 3> &t) { return t[0] == t[1] || t[1] == t[2] || t[2] == t[0]; }
 
@@ -215,10 +227,7 @@ inline void LabelComponents(IndexedMesh &im)
 /// agree), or a corner is not finite or its area overflows (an infinite box has no grid).
 inline std::vector<char> DegenerateFaceMask(const IndexedMesh &im)
 {
-    Box3d box;
-    for (const Point3d &p : im.positions)
-        if (std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2])) box.Add(p);
-    const double tinyArea = 1e-14 * box.SquaredDiag();
+    const double tinyArea = 1e-14 * FiniteBox(im.positions).SquaredDiag();
     std::vector<char> degenerate(im.faces.size(), 0);
     for (size_t f = 0; f < im.faces.size(); ++f) {
         const auto &t = im.faces[f];
@@ -262,8 +271,8 @@ IndexedMesh BuildIndexedMesh(const MeshType &m, MeshDiagnostics *diagnostics = n
     for (size_t vi = 0; vi < m.vert.size(); ++vi)
         if (!m.vert[vi].IsD() && vertexIndex[vi] < 0) ++diag.unreferencedVertices;
 
-    for (const Point3d &p : im.positions)
-        if (!(std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]))) ++diag.nonFiniteVertices;
+    diag.nonFiniteVertices = int(std::count_if(im.positions.begin(), im.positions.end(),
+                                               [](const Point3d &p) { return !IsFinite(p); }));
     const std::vector<char> degenerate = detail::DegenerateFaceMask(im);
     diag.degenerateFaces = int(std::count(degenerate.begin(), degenerate.end(), 1));
 

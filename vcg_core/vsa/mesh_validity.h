@@ -416,13 +416,10 @@ double SavedCoordinateClearance(const std::vector<Point3d> &positions)
 
 /// The margin of a grid of the faces of `im` that offers pairs to FacesIntersect with `clearance`:
 /// faces it calls meeting are at most the clearance, or kOnPlane times an edge (within the
-/// diagonal), apart, so their boxes grown by this touch. With the clearance alone, a count of
-/// pairs with and without one disagreed on faces 2e-17 apart.
+/// diagonal), apart, so their boxes grown by this touch.
 inline double PairGridMargin(const IndexedMesh &im, double clearance)
 {
-    Box3d box;
-    for (const Point3d &p : im.positions)
-        if (std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2])) box.Add(p);
+    const Box3d box = FiniteBox(im.positions);
     return std::max(clearance / 2, box.IsNull() ? 0.0 : kOnPlane * box.Diag());
 }
 

@@ -208,12 +208,11 @@ inline std::vector<Proxy> UsableProxies(const MeshingSurface &s, const std::vect
         areaSum[r] += s.cellDoubleArea[c];
         centroidSum[r] += s.cellCentroid[c] * s.cellDoubleArea[c];
     }
-    auto finite = [](const Point3d &p) { return std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]); };
     for (size_t r = 0; r < proxies.size(); ++r) {
         Proxy &proxy = proxies[r];
-        if (!finite(proxy.point)) proxy.point = areaSum[r] > 0 ? centroidSum[r] / areaSum[r] : Point3d(0, 0, 0);
+        if (!IsFinite(proxy.point)) proxy.point = areaSum[r] > 0 ? centroidSum[r] / areaSum[r] : Point3d(0, 0, 0);
         const double length = proxy.normal.Norm();
-        if (finite(proxy.normal) && length > 0) {
+        if (IsFinite(proxy.normal) && length > 0) {
             proxy.normal /= length;
         } else {
             const double sumLength = normalSum[r].Norm();
@@ -409,8 +408,8 @@ struct PassDefects
     };
     std::vector<Crossing> crossings;
     std::vector<char> degenerate;  ///< per face of the pass's output: DegenerateFaceMask
-    /// Faces flagged in `degenerate`: anchors projected onto one point (maxAnchorMove = 1 on a
-    /// flat wedge put two at the same place), whose faces the next pass pins.
+    /// Faces flagged in `degenerate` (anchors projected onto one point): the next pass pins
+    /// their anchors.
     size_t degenerateFaces = 0;
     size_t Count() const { return intersections.size() + closePairs.size() + crossings.size() + degenerateFaces; }
     /// Whether some faces meet or come too close: what halving, keeping input faces and carving
@@ -1111,8 +1110,7 @@ MeshingReport BuildApproximatingMesh(const IndexedMesh &in, const Partition &par
 
     // Output vertices are input vertices, points between them, and anchors that PlaceAnchors kept
     // within the output's range; an input beyond that range (in double, written to float) is not.
-    auto finite = [](const Point3d &p) { return std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]); };
-    if (!std::all_of(pass.positions.begin(), pass.positions.end(), finite))
+    if (!std::all_of(pass.positions.begin(), pass.positions.end(), IsFinite))
         return fail("an output vertex has a coordinate that the output mesh's scalar cannot hold");
     if (cb) cb(80, "VSA meshing: writing the mesh");
     auto vertex = Allocator<OutMeshType>::AddVertices(out, pass.positions.size());

@@ -33,8 +33,7 @@ inline bool BoxesTouch(const Box3d &a, const Box3d &b)
 
 /// How much a grid grows its box on every side so that no axis has zero thickness, whatever the
 /// box: relative to the diagonal, and to the largest coordinate, since far from the origin a
-/// padding of a flat box's diagonal is lost to rounding (a unit square at z = 1e12 kept a box
-/// of zero thickness, so a cell size of 0).
+/// padding of a flat box's diagonal alone is lost to rounding.
 inline double GridPadding(const Box3d &box)
 {
     double largest = 0;
