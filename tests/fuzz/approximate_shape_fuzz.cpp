@@ -194,8 +194,11 @@ void Run(Reader &in, const ShapeApproximationParam &param, double scale, const d
     DecodeMesh(in, scale, offset, mesh);
     std::vector<typename MeshType::CoordType> coords;
     for (const auto &v : mesh.vert) coords.push_back(v.cP());
-    // Without repair passes (repairRounds 0) the first output is kept as it is, folds and all.
-    const bool expectValid = param.meshing.repairRounds > 0 && ClearlyValid(mesh);
+    // Without repair passes (repairRounds 0) the first output is kept as it is, folds and all;
+    // anchors moved farther than half their shortest chord can fold the triangles around them.
+    const bool expectValid =
+        param.meshing.repairRounds > 0 && param.meshing.maxAnchorMove <= MeshingParam().maxAnchorMove &&
+        ClearlyValid(mesh);
     const ShapeApproximationResult r = ApproximateShape(mesh, out, param);
     Check(mesh, coords, expectValid, r, out);
 }
