@@ -5,7 +5,10 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <limits>
 #include <string>
+#include <vector>
 
 namespace {
 
@@ -77,6 +80,101 @@ TEST(ApproximateShape, RefusesAnUnorientedMeshWithARepeatedVertexFaceToo)
     EXPECT_FALSE(r.ok);
     EXPECT_NE(r.error.find("not consistently oriented (3 edges"), std::string::npos) << r.error;
     EXPECT_EQ(out.FN(), 0);
+}
+
+/// Every output coordinate finite, and the report saying so.
+void ExpectFiniteOutput(const TMesh &out, const ShapeApproximationResult &r)
+{
+    for (const auto &v : out.vert)
+        for (int i = 0; i < 3; ++i) EXPECT_TRUE(std::isfinite(v.cP()[i])) << "vertex " << (&v - &out.vert[0]);
+    EXPECT_EQ(r.meshing.validity.nonFiniteVertices, 0);
+}
+
+/// An open triangular prism around 1e37 with a corner at z = FLT_MAX (k=3, L2, random seeding,
+/// anchors projected): projecting that corner on the planes took it beyond FLT_MAX, and the
+/// float output got an infinite coordinate while the report said valid.
+TEST(ApproximateShape, ProjectedAnchorsStayWithinTheFloatRange)
+{
+    const float s = std::ldexp(1.f, 121), top = std::numeric_limits<float>::max();
+    TMesh prism, out;
+    vsa_test::BuildFromLists(prism,
+                             {{0, -3 * s, s}, {0, 2 * s, 3 * s}, {0, 3 * s, -s},
+                              {3 * s, -3 * s, top}, {3 * s, 2 * s, 3 * s}, {3 * s, 3 * s, -s}},
+                             {{0, 1, 4}, {0, 4, 3}, {1, 2, 5}, {1, 5, 4}, {2, 0, 3}, {2, 3, 5}});
+    ShapeApproximationParam param;
+    param.partition.proxyCount = 3;
+    param.partition.metric = MetricKind::L2;
+    param.partition.init = SeedingMethod::Random;
+    param.partition.randomSeed = 46;
+    const ShapeApproximationResult r = ApproximateShape(prism, out, param);
+    ASSERT_TRUE(r.ok) << r.error;
+    ExpectFiniteOutput(out, r);
+    EXPECT_TRUE(r.meshing.validity.IsValid()) << r.meshing.validity.Summary();
+}
+
+/// Coordinates beyond the float range (a double mesh, pymeshlab's) are refused: areas and moments
+/// could overflow, and a float output could not hold them.
+TEST(ApproximateShape, RefusesCoordinatesBeyondTheFloatRange)
+{
+    vsa_test::BareMesh tetrahedron;
+    const std::vector<vcg::Point3d> coords = {{0, 0, 0}, {1e39, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+    vcg::tri::BuildMeshFromCoordVectorIndexVector(
+        tetrahedron, coords, std::vector<vcg::Point3i>{{0, 2, 1}, {0, 1, 3}, {1, 2, 3}, {0, 3, 2}});
+    TMesh out;
+    ShapeApproximationParam param;
+    param.partition.proxyCount = 4;
+    const ShapeApproximationResult r = ApproximateShape(tetrahedron, out, param);
+    EXPECT_FALSE(r.ok);
+    EXPECT_NE(r.error.find("(the float range)"), std::string::npos) << r.error;
+    EXPECT_EQ(out.FN(), 0);
+}
+
+/// A unit square flat in the plane z = 1e12 (or 1e20), k=1: the grids' boxes kept no thickness
+/// there, and cell indices came out of 0 / 0 (undefined behaviour, caught under UBSan).
+TEST(ApproximateShape, FlatSquareFarFromTheOrigin)
+{
+    for (float z : {1e12f, 1e20f}) {
+        TMesh square, out;
+        vsa_test::BuildFromLists(square, {{0, 0, z}, {1, 0, z}, {1, 1, z}, {0, 1, z}}, {{0, 1, 2}, {0, 2, 3}});
+        const ShapeApproximationResult r = Approximate(square, out, 1);
+        ASSERT_TRUE(r.ok) << r.error;
+        EXPECT_EQ(out.FN(), 2);
+        EXPECT_EQ(out.VN(), 4);
+        ExpectFiniteOutput(out, r);
+        EXPECT_TRUE(r.meshing.validity.IsValid()) << r.meshing.validity.Summary();
+    }
+}
+
+/// Deleted faces and vertices, as MeshLab leaves them before compacting, are left out: the
+/// output is the compact mesh's, and deleted faces have no region.
+TEST(ApproximateShape, DeletedElementsAreLeftOut)
+{
+    TMesh compact, withDeleted, out, outOfCompact;
+    vsa_test::MakeTessellatedCube(compact, 3);
+    vsa_test::MakeTessellatedCube(withDeleted, 3);
+    auto extra = vcg::tri::Allocator<TMesh>::AddVertices(withDeleted, 2);
+    extra[0].P() = vcg::Point3f(5, 5, 5);
+    extra[1].P() = vcg::Point3f(std::numeric_limits<float>::quiet_NaN(), 0, 0);
+    vcg::tri::Allocator<TMesh>::AddFace(withDeleted, &withDeleted.vert[0], &withDeleted.vert[1],
+                                         &withDeleted.vert[withDeleted.vert.size() - 2]);
+    vcg::tri::Allocator<TMesh>::DeleteFace(withDeleted, withDeleted.face.back());
+    vcg::tri::Allocator<TMesh>::DeleteFace(withDeleted, withDeleted.face[7]);
+    vcg::tri::Allocator<TMesh>::DeleteVertex(withDeleted, withDeleted.vert.back());
+    vcg::tri::Allocator<TMesh>::DeleteVertex(withDeleted, withDeleted.vert[withDeleted.vert.size() - 2]);
+    vcg::tri::Allocator<TMesh>::DeleteFace(compact, compact.face[7]);
+    vcg::tri::Allocator<TMesh>::CompactEveryVector(compact);
+
+    const ShapeApproximationResult r = Approximate(withDeleted, out, 6);
+    const ShapeApproximationResult rc = Approximate(compact, outOfCompact, 6);
+    ASSERT_TRUE(r.ok) << r.error;
+    ASSERT_TRUE(rc.ok) << rc.error;
+    EXPECT_EQ(r.input.faces, compact.FN());
+    ASSERT_EQ(out.VN(), outOfCompact.VN());
+    ASSERT_EQ(out.FN(), outOfCompact.FN());
+    for (int v = 0; v < out.VN(); ++v) EXPECT_EQ(out.vert[v].cP(), outOfCompact.vert[v].cP());
+    ASSERT_EQ(r.inputFaceRegion.size(), withDeleted.face.size());
+    for (size_t f = 0; f < withDeleted.face.size(); ++f)
+        EXPECT_EQ(r.inputFaceRegion[f] < 0, withDeleted.face[f].IsD()) << "face " << f;
 }
 
 }  // namespace

@@ -68,3 +68,34 @@ TEST(SurfaceGrid, EmptyMeshHasNothingNear)
     const SurfaceGrid grid(empty.positions, empty.faces);
     EXPECT_FALSE(grid.HasFaceWithin(Point3d(0, 0, 0), 1e9));
 }
+
+TEST(SurfaceGrid, FlatMeshFarFromTheOriginKeepsCellsOfPositiveSize)
+{
+    // Far from the origin a padding of the diagonal alone was lost to rounding: a unit square at
+    // z = 1e12 kept a box of zero thickness, a cell size of 0, and cell indices of 0 / 0.
+    for (double z : {1e12, 1e20, 3e38}) {
+        const std::vector<Point3d> positions = {{0, 0, z}, {1, 0, z}, {1, 1, z}, {0, 1, z}};
+        vcg::Box3d box;
+        for (const Point3d &p : positions) box.Add(p);
+        box.Offset(GridPadding(box));
+        for (int i = 0; i < 3; ++i) EXPECT_GT(box.Dim()[i], 0) << "axis " << i << " at z = " << z;
+        const std::vector<std::array<int, 3>> faces = {{0, 1, 2}, {0, 2, 3}};
+        const SurfaceGrid grid(positions, faces);
+        EXPECT_TRUE(grid.HasFaceWithin(Point3d(0.5, 0.25, z), 0)) << "z = " << z;
+        EXPECT_FALSE(grid.HasFaceWithin(Point3d(2, 2, z), 0.5)) << "z = " << z;
+    }
+}
+
+TEST(SurfaceGrid, PointsFarOutsideFallInTheCellsAtItsEdge)
+{
+    // Clamped before the conversion to int, which a quotient beyond its range would overflow.
+    vsa_test::TMesh torus;
+    vsa_test::MakeTorus(torus, 1.f, 0.3f, 24, 12);
+    const IndexedMesh im = BuildIndexedMesh(torus);
+    const SurfaceGrid grid(im.positions, im.faces);
+    vcg::Box3d box;
+    for (const Point3d &p : im.positions) box.Add(p);
+    EXPECT_EQ(grid.CellOf(Point3d(1e300, 1e300, 1e300)), grid.CellOf(box.max));
+    EXPECT_EQ(grid.CellOf(Point3d(-1e300, -1e300, -1e300)), grid.CellOf(box.min));
+    EXPECT_EQ(grid.CellOf(box.min), vcg::Point3i(0, 0, 0));
+}

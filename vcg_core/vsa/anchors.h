@@ -388,10 +388,13 @@ inline std::vector<std::vector<int>> CellPolygons(const MeshingSurface &s, const
 /// the cut is ours, not the partition's, and flattening it onto the one plane would flatten
 /// a closed region into a pancake. Without `project`, anchors stay at their input vertices,
 /// and so do anchors on surface vertices flagged in `pinned` (empty, or one flag per vertex).
+/// An anchor whose move would take a coordinate beyond `largestCoordinate` (the largest the
+/// output's scalar holds) stays put too: near the float limits a projection can leave the
+/// range, and the coordinate would be written as infinite.
 inline std::vector<Point3d> PlaceAnchors(const MeshingSurface &s, const AnchorSet &anchors,
                                          const std::vector<std::vector<int>> &polygons,
                                          const std::vector<Proxy> &proxies, bool project, double maxMove,
-                                         const std::vector<char> &pinned = {})
+                                         double largestCoordinate, const std::vector<char> &pinned = {})
 {
     const int anchorCount = anchors.Count();
     std::vector<Point3d> placed(anchorCount);
@@ -422,7 +425,10 @@ inline std::vector<Point3d> PlaceAnchors(const MeshingSurface &s, const AnchorSe
         Point3d move = sum / double(regions.size()) - p;
         const double limit = maxMove * shortestChord[a];
         if (move.Norm() > limit) move *= limit / move.Norm();
-        placed[a] = p + move;
+        const Point3d moved = p + move;
+        if (std::abs(moved[0]) <= largestCoordinate && std::abs(moved[1]) <= largestCoordinate &&
+            std::abs(moved[2]) <= largestCoordinate)
+            placed[a] = moved;
     }
     return placed;
 }

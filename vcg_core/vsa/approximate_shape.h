@@ -7,8 +7,12 @@
 #include <vsa/approximation.h>
 #include <vsa/meshing.h>
 
+#include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <exception>
+#include <limits>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -32,6 +36,10 @@ struct ShapeApproximationResult
     std::vector<int> inputFaceRegion; ///< per face of the input's container; -1 for deleted faces
     double secondsSeeding = 0, secondsIterations = 0, secondsMeshing = 0;
 };
+
+/// The largest input coordinate accepted, in absolute value: areas and L2 moments grow as the
+/// fourth power of the coordinates, and beyond the float range they could overflow in double.
+constexpr double kLargestInputCoordinate = std::numeric_limits<float>::max();
 
 namespace detail {
 
@@ -90,6 +98,17 @@ ShapeApproximationResult ApproximateShape(const InMeshType &in, OutMeshType &out
                            " vertices with NaN or infinite coordinates; remove them first "
                            "(MeshLab: Cleaning and Repairing > Remove Unreferenced/Duplicate Vertices after "
                            "fixing them).";
+            return result;
+        }
+        double largest = 0;
+        for (const Point3d &p : snapshot.positions)
+            largest = std::max({largest, std::abs(p[0]), std::abs(p[1]), std::abs(p[2])});
+        if (largest > kLargestInputCoordinate) {
+            std::ostringstream why;
+            why << "The mesh has coordinates up to " << largest << ", beyond " << kLargestInputCoordinate
+                << " (the float range): VSA computes areas and moments in double, which they would overflow; "
+                   "scale the mesh down first.";
+            result.error = why.str();
             return result;
         }
         // An input the meshing will refuse is refused here, before the partition.

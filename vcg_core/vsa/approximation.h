@@ -347,11 +347,8 @@ private:
     static void CheckMesh(const IndexedMesh &m)
     {
         if (m.FaceCount() == 0) throw std::invalid_argument("The mesh has no faces: VSA partitions triangles.");
-        const auto finite = [](const Point3d &p) {
-            return std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]);
-        };
         const auto bad =
-            std::count_if(m.positions.begin(), m.positions.end(), [&](const Point3d &p) { return !finite(p); });
+            std::count_if(m.positions.begin(), m.positions.end(), [](const Point3d &p) { return !IsFinite(p); });
         if (bad > 0)
             throw std::invalid_argument(std::to_string(bad) +
                                         " vertices have NaN or infinite coordinates: remove them first.");

@@ -470,7 +470,7 @@ inline bool BuildMeshingSurface(const IndexedMesh &im, const std::vector<int> &f
     s = MeshingSurface();
     s.regionCount = regionCount;
     for (const Point3d &p : im.positions)
-        if (!(std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]))) {
+        if (!IsFinite(p)) {
             error = "the mesh has vertices with NaN or infinite coordinates";
             return false;
         }

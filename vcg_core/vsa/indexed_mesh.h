@@ -38,6 +38,18 @@ struct IndexedMesh
     int VertexCount() const { return int(positions.size()); }
 };
 
+/// Whether the three coordinates of p are finite.
+inline bool IsFinite(const Point3d &p) { return std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]); }
+
+/// The box of the finite points among `positions`.
+inline Box3d FiniteBox(const std::vector<Point3d> &positions)
+{
+    Box3d box;
+    for (const Point3d &p : positions)
+        if (IsFinite(p)) box.Add(p);
+    return box;
+}
+
 /// Whether triangle t uses a vertex twice: it has no area and no edges of its own.
 inline bool RepeatsVertex(const std::array<int, 3> &t) { return t[0] == t[1] || t[1] == t[2] || t[2] == t[0]; }
 
@@ -210,6 +222,22 @@ inline void LabelComponents(IndexedMesh &im)
     }
 }
 
+/// Per face: whether it is degenerate, with no plane to test: it repeats a vertex, its area is
+/// tiny relative to the box of the finite vertices (so that a millimetre and a kilometre model
+/// agree), or a corner is not finite or its area overflows (an infinite box has no grid).
+inline std::vector<char> DegenerateFaceMask(const IndexedMesh &im)
+{
+    const double tinyArea = 1e-14 * FiniteBox(im.positions).SquaredDiag();
+    std::vector<char> degenerate(im.faces.size(), 0);
+    for (size_t f = 0; f < im.faces.size(); ++f) {
+        const auto &t = im.faces[f];
+        const double doubleArea =
+            ((im.positions[t[1]] - im.positions[t[0]]) ^ (im.positions[t[2]] - im.positions[t[0]])).Norm();
+        degenerate[f] = RepeatsVertex(t) || !(doubleArea > 2 * tinyArea) || !std::isfinite(doubleArea);
+    }
+    return degenerate;
+}
+
 }  // namespace detail
 
 /// Builds the flat snapshot of `m` and reports what is unusual about it. Deleted faces and
@@ -243,19 +271,10 @@ IndexedMesh BuildIndexedMesh(const MeshType &m, MeshDiagnostics *diagnostics = n
     for (size_t vi = 0; vi < m.vert.size(); ++vi)
         if (!m.vert[vi].IsD() && vertexIndex[vi] < 0) ++diag.unreferencedVertices;
 
-    Box3d box;
-    for (const Point3d &p : im.positions) {
-        if (std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2])) box.Add(p);
-        else ++diag.nonFiniteVertices;
-    }
-    // Relative to the model's size, so that a millimetre and a kilometre model agree.
-    const double tinyArea = 1e-14 * box.SquaredDiag();
-    for (const auto &t : im.faces) {
-        const double doubleArea =
-            ((im.positions[t[1]] - im.positions[t[0]]) ^ (im.positions[t[2]] - im.positions[t[0]])).Norm();
-        if (RepeatsVertex(t) || !(doubleArea > 2 * tinyArea))
-            ++diag.degenerateFaces;
-    }
+    diag.nonFiniteVertices = int(std::count_if(im.positions.begin(), im.positions.end(),
+                                               [](const Point3d &p) { return !IsFinite(p); }));
+    const std::vector<char> degenerate = detail::DegenerateFaceMask(im);
+    diag.degenerateFaces = int(std::count(degenerate.begin(), degenerate.end(), 1));
 
     detail::LinkFaces(im, diag);
     diag.nonManifoldVertices = detail::CountNonManifoldVertices(im);

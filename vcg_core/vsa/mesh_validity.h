@@ -32,10 +32,11 @@ struct MeshValidity : MeshDiagnostics
     int selfIntersections = 0;    ///< pairs of faces that meet beyond their shared vertices; -1 if not counted
     int eulerCharacteristic = 0;  ///< V - E + F
 
-    /// Manifold, oriented, and free of degenerate, duplicate and self-intersecting faces.
+    /// Finite, manifold, oriented, and free of degenerate, duplicate and self-intersecting faces.
     bool IsValid() const
     {
-        return IsTwoManifold() && IsOriented() && degenerateFaces == 0 && duplicateFaces == 0 && selfIntersections <= 0;
+        return nonFiniteVertices == 0 && IsTwoManifold() && IsOriented() && degenerateFaces == 0 &&
+               duplicateFaces == 0 && selfIntersections <= 0;
     }
 
     std::string Summary() const
@@ -244,6 +245,10 @@ inline bool TrianglesCloser(const std::vector<Point3d> &P, const std::array<int,
     return false;
 }
 
+/// Corners this close to a face's plane, relative to the longest edge of the two faces, count as
+/// on it in FacesIntersect: faces that close can count as meeting (see PairGridMargin).
+constexpr double kOnPlane = 1e-12;
+
 /// What FacesIntersect needs of each face, computed once however many pairs it is in.
 struct FaceShape
 {
@@ -314,7 +319,7 @@ inline bool FacesIntersect(const IndexedMesh &im, const std::vector<FaceShape> &
     }
 
     if (shared == 0) {
-        const double onPlane = 1e-12 * longest;
+        const double onPlane = kOnPlane * longest;
         // Most pairs a grid offers lie with one face wholly on one side of the other's plane.
         auto oneSide = [](const double *h, double margin) {
             return (h[0] > margin && h[1] > margin && h[2] > margin) ||
@@ -372,7 +377,7 @@ inline bool FacesIntersect(const IndexedMesh &im, const std::vector<FaceShape> &
                                 DropAxis(P[tg[(j0 + 1) % 3]], axis) - apex,
                                 DropAxis(P[tg[(j0 + 2) % 3]], axis) - apex);
     }
-    const double onPlane = 1e-12 * longest;
+    const double onPlane = kOnPlane * longest;
     const int i1 = (i0 + 1) % 3, i2 = (i0 + 2) % 3, j1 = (j0 + 1) % 3, j2 = (j0 + 2) % 3;
     if (SegmentMeetsTriangle(P[tf[i1]], P[tf[i2]], overG[i1], overG[i2], P[tg[0]], P[tg[1]], P[tg[2]], ng,
                              onPlane) ||
@@ -409,21 +414,13 @@ double SavedCoordinateClearance(const std::vector<Point3d> &positions)
     return std::min(2 * std::sqrt(3.0) * perCoordinate, 1e-5 * box.Diag());
 }
 
-/// Same criterion as BuildIndexedMesh's degenerate count; such faces have no plane to test.
-inline std::vector<char> DegenerateFaceMask(const IndexedMesh &im)
+/// The margin of a grid of the faces of `im` that offers pairs to FacesIntersect with `clearance`:
+/// faces it calls meeting are at most the clearance, or kOnPlane times an edge (within the
+/// diagonal), apart, so their boxes grown by this touch.
+inline double PairGridMargin(const IndexedMesh &im, double clearance)
 {
-    Box3d box;
-    for (const Point3d &p : im.positions)
-        if (std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2])) box.Add(p);
-    const double tinyArea = 1e-14 * box.SquaredDiag();
-    std::vector<char> degenerate(im.faces.size(), 0);
-    for (size_t f = 0; f < im.faces.size(); ++f) {
-        const auto &t = im.faces[f];
-        const double doubleArea =
-            ((im.positions[t[1]] - im.positions[t[0]]) ^ (im.positions[t[2]] - im.positions[t[0]])).Norm();
-        degenerate[f] = RepeatsVertex(t) || !(doubleArea > 2 * tinyArea);
-    }
-    return degenerate;
+    const Box3d box = FiniteBox(im.positions);
+    return std::max(clearance / 2, box.IsNull() ? 0.0 : kOnPlane * box.Diag());
 }
 
 /// ShapeOfFace of every face of `im` not flagged in `degenerate`.
@@ -435,7 +432,7 @@ inline std::vector<FaceShape> ShapesOfFaces(const IndexedMesh &im, const std::ve
     return shape;
 }
 
-/// Calls met(g) for each face g in `grid` (built on `im` with a margin of half the clearance)
+/// Calls met(g) for each face g in `grid` (built on `im` with PairGridMargin)
 /// that face f intersects, or comes within `clearance` of (see FacesIntersect), except f itself
 /// and the faces `skip(g)` leaves out. `metFrom` (one entry per face, never f before) records
 /// each g met from f, so that it is tested once.
@@ -469,7 +466,7 @@ inline std::vector<std::pair<int, int>> SelfIntersectingPairs(const IndexedMesh 
     auto isFresh = [&](int f) { return fresh.empty() || fresh[f]; };
     std::vector<char> outOfGrid(faceCount);
     for (int f = 0; f < faceCount; ++f) outOfGrid[f] = degenerate[f] || !isFresh(f);
-    const SurfaceGrid grid(im.positions, im.faces, outOfGrid, clearance / 2);
+    const SurfaceGrid grid(im.positions, im.faces, outOfGrid, PairGridMargin(im, clearance));
     const std::vector<FaceShape> shape = ShapesOfFaces(im, degenerate);
     std::vector<int> metFrom(faceCount, -1);
     std::vector<std::pair<int, int>> pairs;

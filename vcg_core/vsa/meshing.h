@@ -17,6 +17,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <memory>
 #include <sstream>
 #include <string>
@@ -207,12 +208,11 @@ inline std::vector<Proxy> UsableProxies(const MeshingSurface &s, const std::vect
         areaSum[r] += s.cellDoubleArea[c];
         centroidSum[r] += s.cellCentroid[c] * s.cellDoubleArea[c];
     }
-    auto finite = [](const Point3d &p) { return std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]); };
     for (size_t r = 0; r < proxies.size(); ++r) {
         Proxy &proxy = proxies[r];
-        if (!finite(proxy.point)) proxy.point = areaSum[r] > 0 ? centroidSum[r] / areaSum[r] : Point3d(0, 0, 0);
+        if (!IsFinite(proxy.point)) proxy.point = areaSum[r] > 0 ? centroidSum[r] / areaSum[r] : Point3d(0, 0, 0);
         const double length = proxy.normal.Norm();
-        if (finite(proxy.normal) && length > 0) {
+        if (IsFinite(proxy.normal) && length > 0) {
             proxy.normal /= length;
         } else {
             const double sumLength = normalSum[r].Norm();
@@ -344,7 +344,7 @@ MeshingPass RunMeshingPass(const MeshingSurface &s, const std::vector<Proxy> &pr
     pass.polygonAt.resize(s.CellCount());
     for (int c = 0; c < s.CellCount(); ++c) pass.polygonAt[c] = AnchorPositionsInLoop(s, c, anchors);
     pass.positions = PlaceAnchors(s, anchors, pass.polygons, proxies, param.projectAnchors, param.maxAnchorMove,
-                                  pinnedAnchors);
+                                  double(std::numeric_limits<typename CoordType::ScalarType>::max()), pinnedAnchors);
     for (int v : anchors.vertexOfAnchor) pass.pinnedAnchors += pinnedAnchors[v];
     for (Point3d &p : pass.positions) p = AsWritten<CoordType>(p);
     pass.vertexSource = anchors.vertexOfAnchor;
@@ -408,7 +408,10 @@ struct PassDefects
     };
     std::vector<Crossing> crossings;
     std::vector<char> degenerate;  ///< per face of the pass's output: DegenerateFaceMask
-    size_t Count() const { return intersections.size() + closePairs.size() + crossings.size(); }
+    /// Faces flagged in `degenerate` (anchors projected onto one point): the next pass pins
+    /// their anchors.
+    size_t degenerateFaces = 0;
+    size_t Count() const { return intersections.size() + closePairs.size() + crossings.size() + degenerateFaces; }
     /// Whether some faces meet or come too close: what halving, keeping input faces and carving
     /// work against.
     bool HasPairs() const { return !intersections.empty() || !closePairs.empty(); }
@@ -480,6 +483,7 @@ inline PassDefects FindDefects(const MeshingPass &pass, double clearance, const 
     output.positions = pass.positions;
     output.faces = pass.triangles;
     defects.degenerate = DegenerateFaceMask(output);
+    defects.degenerateFaces = size_t(std::count(defects.degenerate.begin(), defects.degenerate.end(), 1));
     std::vector<char> fresh;  // all, without `previous`
     std::vector<int> repeatOf;
     if (previous) {
@@ -552,7 +556,7 @@ inline std::pair<int, double> ChainSplit(const MeshingSurface &s, const MeshingP
 /// the chord-edge whose chain strays farthest relative to its length (or the first chain of
 /// the cell's polygon with a vertex to spare, when none of the face's chords has one) gets one
 /// too, and the face's anchors are pinned to their input vertices; so do the faces of close
-/// pairs. Returns how many anchors were added or pinned.
+/// pairs and degenerate faces. Returns how many anchors were added or pinned.
 inline int RespondToDefects(const MeshingSurface &s, const MeshingPass &pass, const PassDefects &defects,
                             std::vector<char> &requiredAnchors, std::vector<char> &pinnedAnchors)
 {
@@ -572,6 +576,8 @@ inline int RespondToDefects(const MeshingSurface &s, const MeshingPass &pass, co
 
     std::vector<int> offending;
     defects.ForEachPair([&](int f, int g) { offending.push_back(f), offending.push_back(g); });
+    for (size_t f = 0; f < defects.degenerate.size(); ++f)
+        if (defects.degenerate[f]) offending.push_back(int(f));
     std::sort(offending.begin(), offending.end());
     offending.erase(std::unique(offending.begin(), offending.end()), offending.end());
     // Per output vertex, its position in the polygon of the cell at hand, and that cell's first
@@ -732,7 +738,7 @@ public:
         }
         if (!freshFaces.empty() && !grid_) {
             shape_ = ShapesOfFaces(in_, Degenerate());
-            grid_ = std::make_unique<SurfaceGrid>(in_.positions, in_.faces, Degenerate());
+            grid_ = std::make_unique<SurfaceGrid>(in_.positions, in_.faces, Degenerate(), PairGridMargin(in_, 0));
         }
         std::vector<int> metFrom(freshFaces.empty() ? 0 : in_.FaceCount(), -1);
         for (int f : freshFaces) {
@@ -1102,6 +1108,10 @@ MeshingReport BuildApproximatingMesh(const IndexedMesh &in, const Partition &par
         }
     }
 
+    // Output vertices are input vertices, points between them, and anchors that PlaceAnchors kept
+    // within the output's range; an input beyond that range (in double, written to float) is not.
+    if (!std::all_of(pass.positions.begin(), pass.positions.end(), IsFinite))
+        return fail("an output vertex has a coordinate that the output mesh's scalar cannot hold");
     if (cb) cb(80, "VSA meshing: writing the mesh");
     auto vertex = Allocator<OutMeshType>::AddVertices(out, pass.positions.size());
     for (const Point3d &p : pass.positions) (vertex++)->P() = CoordType::Construct(p);

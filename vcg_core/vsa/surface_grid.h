@@ -13,7 +13,9 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdlib>
+#include <limits>
 #include <utility>
 #include <vector>
 
@@ -27,6 +29,16 @@ inline bool BoxesTouch(const Box3d &a, const Box3d &b)
     for (int i = 0; i < 3; ++i)
         if (a.min[i] > b.max[i] || b.min[i] > a.max[i]) return false;
     return true;
+}
+
+/// How much a grid grows its box on every side so that no axis has zero thickness, whatever the
+/// box: relative to the diagonal, and to the largest coordinate, since far from the origin a
+/// padding of a flat box's diagonal alone is lost to rounding.
+inline double GridPadding(const Box3d &box)
+{
+    double largest = 0;
+    for (int i = 0; i < 3; ++i) largest = std::max({largest, std::abs(box.min[i]), std::abs(box.max[i])});
+    return std::max(box.Diag() * 1e-9, largest * 16 * std::numeric_limits<double>::epsilon()) + 1e-300;
 }
 
 /// Faces bucketed in a uniform grid of about one cell per face, as flat arrays (the faces of
@@ -52,8 +64,15 @@ public:
         cellOffset_.assign(2, 0);  // one empty cell, unless there is something to bucket
         faceCellOffset_.assign(faces.size() + 1, 0);
         if (box_.IsNull()) return;
-        box_.Offset(box_.Diag() * 1e-9 + 1e-300);  // no zero-thickness box for a flat mesh
-        BestDim<double>(std::max<size_t>(inGrid, 1), box_.Dim(), dim_);
+        box_.Offset(GridPadding(box_));
+        Point3d extent = box_.Dim();
+        const double longest = std::max({extent[0], extent[1], extent[2]});
+        if (std::isfinite(longest)) {  // a box beyond the double range keeps one cell
+            // vcglib's BestDim divides the cell count by products of the extents, which overflow
+            // or vanish far from 1: there it gets them relative to the longest, in proportion.
+            if (longest > 1e100 || longest < 1e-100) extent /= longest;
+            BestDim<double>(std::max<size_t>(inGrid, 1), extent, dim_);
+        }
         for (int i = 0; i < 3; ++i) {
             dim_[i] = std::max(dim_[i], 1);
             cellSize_[i] = box_.Dim()[i] / dim_[i];
@@ -79,11 +98,13 @@ public:
         for (int k = faceCellOffset_[f]; k < faceCellOffset_[f + 1]; ++k) visit(faceCells_[k]);
     }
 
-    /// The cell holding p (clamped to the grid).
+    /// The cell holding p (clamped to the grid). Clamped before the conversion to int: a point
+    /// far outside the grid would overflow it.
     Point3i CellOf(const Point3d &p) const
     {
-        Point3i c;
-        for (int i = 0; i < 3; ++i) c[i] = std::clamp(int((p[i] - box_.min[i]) / cellSize_[i]), 0, dim_[i] - 1);
+        Point3i c(0, 0, 0);
+        for (int i = 0; i < 3; ++i)
+            if (dim_[i] > 1) c[i] = int(std::clamp((p[i] - box_.min[i]) / cellSize_[i], 0.0, double(dim_[i] - 1)));
         return c;
     }
     size_t CellIndex(int x, int y, int z) const { return (size_t(z) * dim_[1] + y) * dim_[0] + x; }
