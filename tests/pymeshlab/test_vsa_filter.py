@@ -186,11 +186,17 @@ def bad_inputs(fandisk_path, folder):
         ("negative target error", fandisk(), {"targeterror": -1.0}, "The target error must be a finite number >= 0"),
         ("NaN coordinate", new_meshset(nan_v, TETRA_F), {"proxynum": 2}, "1 vertices with NaN or infinite"),
         ("non-manifold edge", new_meshset(FIN_V, FIN_F), {"proxynum": 1}, "The mesh cannot be approximated"),
+        # pymeshlab's meshes are double: beyond float's range, areas and moments would overflow.
+        ("beyond the float range", new_meshset(np.array(TETRA_V) * 1e200, TETRA_F), {"proxynum": 2},
+         "beyond 3.40282e+38 (the float range)"),
     ]
 
 
-@pytest.mark.parametrize("case", range(7), ids=["empty mesh", "point cloud", "proxynum 0", "proxynum above the faces",
-                                                "negative target error", "NaN coordinate", "non-manifold edge"])
+BAD_INPUTS = ["empty mesh", "point cloud", "proxynum 0", "proxynum above the faces", "negative target error",
+              "NaN coordinate", "non-manifold edge", "beyond the float range"]
+
+
+@pytest.mark.parametrize("case", range(len(BAD_INPUTS)), ids=BAD_INPUTS)
 def test_bad_input_raises_our_message_and_changes_nothing(vsa_loaded, fandisk_path, tmp_path, case):
     name, ms, parameters, message = bad_inputs(fandisk_path, tmp_path)[case]
     before = snapshot(ms)
@@ -199,6 +205,18 @@ def test_bad_input_raises_our_message_and_changes_nothing(vsa_loaded, fandisk_pa
         ms.apply_filter(FILTER, **parameters)
     assert message in str(raised.value), name
     assert snapshot(ms) == before, name
+
+
+@pytest.mark.parametrize("scale, offset", [(3e38, 0), (1, 1e12), (1e-30, 0)],
+                         ids=["near the float limit", "far from the origin", "tiny"])
+def test_extreme_but_finite_coordinates_give_a_valid_output(vsa_loaded, scale, offset):
+    # Four planes fit a tetrahedron exactly: its corners come back, wherever it is.
+    ms = new_meshset(np.array(TETRA_V) * scale + offset, TETRA_F)
+    figures = ms.apply_filter(FILTER, proxynum=4, metric="L2", init="Random")
+    corners = np.sort(ms.mesh(0).vertex_matrix(), axis=0)
+    output = np.sort(ms.current_mesh().vertex_matrix(), axis=0)
+    assert np.isfinite(output).all() and figures["manifold"] and figures["closed"] and figures["faces_out"] == 4
+    assert np.allclose(output, corners, rtol=1e-12, atol=1e-9 * scale)
 
 
 def test_valid_small_input_still_works(vsa_loaded):
