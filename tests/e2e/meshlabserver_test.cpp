@@ -10,6 +10,7 @@
 #include <sys/wait.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -444,4 +445,42 @@ TEST(MeshLabServerBadInput, EmptyMesh)
     const fs::path dir = WorkDir("bad_empty");
     const fs::path empty = WriteOff(dir, "empty.off", "OFF\n0 0 0\n");
     ExpectCleanFailure(RunWithProxyNum(dir, empty, "1"), "The mesh is empty.");
+}
+
+namespace {
+/// An extreme but finite input gives an output whose every coordinate is finite, saved by
+/// meshlabserver and read back; returns its face count.
+int ExpectFiniteOutput(const fs::path &dir, const fs::path &mesh, const std::map<std::string, std::string> &params)
+{
+    const fs::path out = dir / "out.ply";
+    const ServerRun run = RunServer(dir, "-i " + Quote(mesh.string()) + " -s " +
+                                             Quote(WriteVsaScript(dir, params).string()) + " -o " +
+                                             Quote(out.string()) + " -l 1");
+    TMesh m;
+    EXPECT_EQ(run.exitCode, 0) << run.output;
+    EXPECT_TRUE(Load(m, out)) << run.output;
+    EXPECT_GT(m.FN(), 0) << run.output;
+    for (const auto &v : m.vert)
+        for (int i = 0; i < 3; ++i) EXPECT_TRUE(std::isfinite(v.cP()[i])) << run.output;
+    return m.FN();
+}
+}  // namespace
+
+// The fuzzing's findings (issue 32): a flat square far from the origin gave the grids a zero cell
+// size (NaN cell indices), a tetrahedron near FLT_MAX infinite anchors. Both give a valid output.
+TEST(MeshLabServerExtremeInput, FlatSquareFarFromTheOrigin)
+{
+    const fs::path dir = WorkDir("extreme_far_flat");
+    const fs::path square = WriteOff(dir, "square.off",
+                                     "OFF\n4 2 0\n0 0 1e12\n1 0 1e12\n1 1 1e12\n0 1 1e12\n3 0 1 2\n3 0 2 3\n");
+    EXPECT_EQ(ExpectFiniteOutput(dir, square, {{"ProxyNum", "1"}}), 2);
+}
+
+TEST(MeshLabServerExtremeInput, TetrahedronNearTheFloatLimit)
+{
+    const fs::path dir = WorkDir("extreme_float_limit");
+    const fs::path tetra = WriteOff(dir, "tetra.off", "OFF\n4 4 0\n0 0 0\n3e38 0 0\n0 3e38 0\n0 0 3e38\n"
+                                                      "3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n");
+    // L2 and random seeding, anchors projected on the planes: the fuzzed prism's settings.
+    EXPECT_EQ(ExpectFiniteOutput(dir, tetra, {{"ProxyNum", "4"}, {"Metric", "1"}, {"Init", "0"}}), 4);
 }

@@ -30,6 +30,8 @@
 #include <QJsonDocument>
 #include <QJsonObject>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <unistd.h>
 #include <cstdlib>
@@ -276,7 +278,11 @@ QJsonArray LayersJson(const MeshDocument &md)
                           {"faces", m.cm.fn},
                           {"edges", m.cm.en},
                           {"current", md.mm() == &m},
-                          {"geometry_checksum", GeometryChecksum(m.cm)}};
+                          {"geometry_checksum", GeometryChecksum(m.cm)},
+                          {"finite", std::all_of(m.cm.vert.begin(), m.cm.vert.end(), [](const CVertexO &v) {
+                               return v.IsD() || (std::isfinite(v.cP()[0]) && std::isfinite(v.cP()[1]) &&
+                                                  std::isfinite(v.cP()[2]));
+                           })}};
         // Per-face attributes, only when the layer has them (filters that colour faces enable them).
         if (m.hasDataMask(MeshModel::MM_FACECOLOR)) {
             std::set<unsigned int> colors;

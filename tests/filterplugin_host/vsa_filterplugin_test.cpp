@@ -361,6 +361,35 @@ TEST(FilterPlugin, NegativeTargetErrorFailsCleanly)
     ExpectCleanFailure(ApplyVsa(kFandisk, {"TargetError=-1"}), "The target error must be a finite number >= 0");
 }
 
+// The fuzzing's findings (issue 32): a flat square far from the origin gave the grids a zero cell
+// size (NaN cell indices), a tetrahedron near FLT_MAX infinite anchors. Both give a valid output
+// whose coordinates are all finite.
+TEST(FilterPlugin, ExtremeButFiniteInputsGiveFiniteOutputs)
+{
+    const QString dir = WorkDir("extreme");
+    const struct
+    {
+        QString name, off;
+        QStringList params;
+        int faces;
+    } cases[] = {
+        {"square", "OFF\n4 2 0\n0 0 1e12\n1 0 1e12\n1 1 1e12\n0 1 1e12\n3 0 1 2\n3 0 2 3\n", {"ProxyNum=1"}, 2},
+        {"tetra", "OFF\n4 4 0\n0 0 0\n3e38 0 0\n0 3e38 0\n0 0 3e38\n3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n",
+         {"ProxyNum=4", "Metric=1", "Init=0"}, 4},
+    };
+    for (const auto &c : cases) {
+        QFile file(dir + "/" + c.name + ".off");
+        ASSERT_TRUE(file.open(QIODevice::WriteOnly | QIODevice::Text));
+        file.write(c.off.toUtf8());
+        file.close();
+        const HostRun run = ApplyVsa(file.fileName(), c.params);
+        ASSERT_EQ(run.exitCode, 0) << run.Dump();
+        const QJsonObject output = Layer(run, c.name + " VSA k=" + c.params[0].section('=', 1));
+        EXPECT_EQ(output["faces"].toInt(), c.faces) << run.Dump();
+        EXPECT_TRUE(output["finite"].toBool()) << run.Dump();
+    }
+}
+
 TEST(FilterPlugin, PointCloudFailsCleanly)
 {
     // fandisk's vertices without its faces.
