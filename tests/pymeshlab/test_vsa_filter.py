@@ -189,11 +189,14 @@ def bad_inputs(fandisk_path, folder):
         # pymeshlab's meshes are double: beyond float's range, areas and moments would overflow.
         ("beyond the float range", new_meshset(np.array(TETRA_V) * 1e200, TETRA_F), {"proxynum": 2},
          "beyond 3.40282e+38 (the float range)"),
+        # and below it, their moments (fourth powers) would underflow.
+        ("below the float range", new_meshset(np.array(TETRA_V) * 1e-200, TETRA_F), {"proxynum": 2},
+         "below 1.17549e-38 (the smallest normal float)"),
     ]
 
 
 BAD_INPUTS = ["empty mesh", "point cloud", "proxynum 0", "proxynum above the faces", "negative target error",
-              "NaN coordinate", "non-manifold edge", "beyond the float range"]
+              "NaN coordinate", "non-manifold edge", "beyond the float range", "below the float range"]
 
 
 @pytest.mark.parametrize("case", range(len(BAD_INPUTS)), ids=BAD_INPUTS)

@@ -112,21 +112,44 @@ TEST(ApproximateShape, ProjectedAnchorsStayWithinTheFloatRange)
     EXPECT_TRUE(r.meshing.validity.IsValid()) << r.meshing.validity.Summary();
 }
 
-/// Coordinates beyond the float range (a double mesh, pymeshlab's) are refused: areas and moments
-/// could overflow, and a float output could not hold them.
-TEST(ApproximateShape, RefusesCoordinatesBeyondTheFloatRange)
+/// In `tetrahedron`, the unit one's corners times `scale`, except vertex 1 at x = `x1`.
+void MakeScaledTetrahedron(vsa_test::BareMesh &tetrahedron, double scale, double x1)
 {
-    vsa_test::BareMesh tetrahedron;
-    const std::vector<vcg::Point3d> coords = {{0, 0, 0}, {1e39, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+    const std::vector<vcg::Point3d> coords = {{0, 0, 0}, {x1, 0, 0}, {0, scale, 0}, {0, 0, scale}};
     vcg::tri::BuildMeshFromCoordVectorIndexVector(
         tetrahedron, coords, std::vector<vcg::Point3i>{{0, 2, 1}, {0, 1, 3}, {1, 2, 3}, {0, 3, 2}});
-    TMesh out;
+}
+
+/// Coordinates beyond the float range (a double mesh, pymeshlab's) are refused: areas and moments
+/// could overflow, and a float output could not hold them. So is a double mesh smaller than the
+/// smallest normal float: at 1e-90 its moments underflowed, and the output of a cube had 22
+/// degenerate faces; at 1e-200 even the squares of its diagonal do. At 1e-30 (above that bound)
+/// it is approximated.
+TEST(ApproximateShape, RefusesMeshesBeyondTheFloatRange)
+{
     ShapeApproximationParam param;
     param.partition.proxyCount = 4;
-    const ShapeApproximationResult r = ApproximateShape(tetrahedron, out, param);
-    EXPECT_FALSE(r.ok);
-    EXPECT_NE(r.error.find("(the float range)"), std::string::npos) << r.error;
-    EXPECT_EQ(out.FN(), 0);
+    struct Case
+    {
+        double scale, x1;
+        const char *message;
+    };
+    for (const Case &c : {Case{1, 1e39, "(the float range)"}, Case{1e-90, 1e-90, "(the smallest normal float)"},
+                          Case{1e-200, 1e-200, "(the smallest normal float)"},
+                          Case{1e-39, 1e-39, "(the smallest normal float)"}, Case{1e-30, 1e-30, nullptr}}) {
+        vsa_test::BareMesh tetrahedron;
+        MakeScaledTetrahedron(tetrahedron, c.scale, c.x1);
+        TMesh out;
+        const ShapeApproximationResult r = ApproximateShape(tetrahedron, out, param);
+        if (!c.message) {
+            EXPECT_TRUE(r.ok) << r.error;
+            EXPECT_EQ(out.FN(), 4);
+            continue;
+        }
+        EXPECT_FALSE(r.ok) << c.scale;
+        EXPECT_NE(r.error.find(c.message), std::string::npos) << r.error;
+        EXPECT_EQ(out.FN(), 0);
+    }
 }
 
 /// A unit square flat in the plane z = 1e12 (or 1e20), k=1: the grids' boxes kept no thickness

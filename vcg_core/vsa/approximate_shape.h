@@ -40,8 +40,33 @@ struct ShapeApproximationResult
 /// The largest input coordinate accepted, in absolute value: areas and L2 moments grow as the
 /// fourth power of the coordinates, and beyond the float range they could overflow in double.
 constexpr double kLargestInputCoordinate = std::numeric_limits<float>::max();
+/// The smallest bounding-box extent accepted (a double mesh can be smaller): L2 moments, fourth
+/// powers of the coordinates, underflow in double well before the smallest normal double.
+constexpr double kSmallestInputSize = std::numeric_limits<float>::min();
 
 namespace detail {
+
+/// Why the size of `mesh` (finite coordinates) is beyond what VSA computes in double, or empty.
+inline std::string RangeRefusal(const IndexedMesh &mesh)
+{
+    const Box3d box = FiniteBox(mesh.positions);
+    double largest = 0, extent = 0;  // not the diagonal: its squares underflow first
+    for (int i = 0; i < 3; ++i) {
+        largest = std::max({largest, std::abs(box.min[i]), std::abs(box.max[i])});
+        extent = std::max(extent, box.max[i] - box.min[i]);
+    }
+    std::ostringstream why;
+    if (largest > kLargestInputCoordinate)
+        why << "The mesh has coordinates up to " << largest << ", beyond " << kLargestInputCoordinate
+            << " (the float range): VSA computes areas and moments in double, which they would overflow; "
+               "scale the mesh down first.";
+    // A mesh collapsed onto one point (extent 0) is left to the meshing's own refusal.
+    else if (extent > 0 && extent < kSmallestInputSize)
+        why << "The mesh is " << extent << " across, below " << kSmallestInputSize
+            << " (the smallest normal float): VSA computes areas and moments in double, which would "
+               "underflow; scale the mesh up first.";
+    return why.str();
+}
 
 /// Maps a stage's 0..100 progress into its slice of the whole run. vcg's callback is a plain
 /// function pointer, so the slice lives in a thread-local.
@@ -100,15 +125,9 @@ ShapeApproximationResult ApproximateShape(const InMeshType &in, OutMeshType &out
                            "fixing them).";
             return result;
         }
-        double largest = 0;
-        for (const Point3d &p : snapshot.positions)
-            largest = std::max({largest, std::abs(p[0]), std::abs(p[1]), std::abs(p[2])});
-        if (largest > kLargestInputCoordinate) {
-            std::ostringstream why;
-            why << "The mesh has coordinates up to " << largest << ", beyond " << kLargestInputCoordinate
-                << " (the float range): VSA computes areas and moments in double, which they would overflow; "
-                   "scale the mesh down first.";
-            result.error = why.str();
+        const std::string outOfRange = detail::RangeRefusal(snapshot);
+        if (!outOfRange.empty()) {
+            result.error = outOfRange;
             return result;
         }
         // An input the meshing will refuse is refused here, before the partition.
