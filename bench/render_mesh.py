@@ -22,6 +22,7 @@ from PIL import Image, ImageDraw, ImageFont
 FRONT = np.array([200, 205, 215], float)  # light grey-blue, like MeshLab's default
 BACK = np.array([230, 40, 40], float)     # faces seen from behind
 AMBIENT = 0.35                            # keeps faces turned from the light readable
+THIN_AXIS_LEAN = 0.2                      # smaller leans harder toward a thin axis
 MARGIN = 0.06                             # of the panel's side, around the projected box
 CAPTION_LINES = 4
 LINE_HEIGHT = 12                          # Pillow's default bitmap font is 11 px high
@@ -61,6 +62,10 @@ class Camera:
         toward[0], toward[up_axis], toward[third] = 1.0, 0.7, 1.3 if up_axis == 1 else -1.3
         if opposite:
             toward[0], toward[third] = -toward[0], -toward[third]
+        # Leaning toward the box's thin axes shows a plate or a blade from its side, not its
+        # edge; a box of equal sides keeps the plain 3/4 view.
+        extent = vertices.max(axis=0) - vertices.min(axis=0)
+        toward = toward / (extent / (np.linalg.norm(extent) or 1.0) + THIN_AXIS_LEAN)
         self.toward = toward / np.linalg.norm(toward)
         world_up = np.eye(3)[up_axis]
         self.right = np.cross(world_up, self.toward)

@@ -189,6 +189,21 @@ def badness(case_verdict):
     return -math.inf if value is None else -value
 
 
+def picture(case, folder, args):
+    """Draws the case's panel into `folder` if --pictures asks for it; without numpy or Pillow,
+    says so once and draws no more."""
+    missed = [t for t, (_, ok) in case["verdicts"].get("ours", {}).items() if not ok]
+    if args.pictures == "none" or (args.pictures == "failing" and not missed):
+        return
+    path = os.path.join(folder, case["case"] + ".png")
+    try:
+        draw_panel(case, path, args.picture_size)
+        case["picture"] = path
+    except ImportError as e:
+        print("note: no pictures (%s): see bench/requirements-pictures.txt" % e, file=sys.stderr)
+        args.pictures = "none"
+
+
 def summary(cases):
     lines, table = [], {}
     header = "%-25s %-9s %-17s %-17s  %s" % ("target", "required", "ours", "cgal", "statement")
@@ -256,12 +271,16 @@ def main():
     parser.add_argument("--out", help="output folder (default: out/bench/<date-time>, git-ignored)")
     parser.add_argument("--summarize", metavar="DIR",
                         help="only (re)write DIR's summary from its results.jsonl, e.g. of a sweep cut short")
+    parser.add_argument("--redraw", action="store_true",
+                        help="with --summarize: draw DIR's pictures again (those --pictures asks for)")
     args = parser.parse_args()
     if args.summarize:
         with open(os.path.join(args.summarize, "results.jsonl")) as f:
             cases = [json.loads(line) for line in f]
         for case in cases:  # with today's targets and thresholds
             case["verdicts"] = {tool: verdicts(case, tool) for tool in ["ours", "cgal"] if tool in case}
+            if args.redraw:
+                picture(case, os.path.join(args.summarize, "pictures"), args)
         write_summary(cases, args.summarize)
         return
 
@@ -317,15 +336,7 @@ def main():
                                                                           "%s_qecd%d.off" % (name, k_prime))
                         case["qecd"] = qecd_done[k_prime]
                     case["verdicts"] = {tool: verdicts(case, tool) for tool in ["ours", "cgal"] if tool in case}
-                    missed = [t for t, (_, ok) in case["verdicts"].get("ours", {}).items() if not ok]
-                    if args.pictures == "all" or (args.pictures == "failing" and missed):
-                        case["picture"] = os.path.join(out_dir, "pictures", case_name + ".png")
-                        try:
-                            draw_panel(case, case["picture"], args.picture_size)
-                        except ImportError as e:
-                            print("note: no pictures (%s): see bench/requirements-pictures.txt" % e, file=sys.stderr)
-                            args.pictures = "none"
-                            del case["picture"]
+                    picture(case, os.path.join(out_dir, "pictures"), args)
                     results.write(json.dumps(case) + "\n")
                     results.flush()
                     cases.append(case)
