@@ -157,10 +157,11 @@ def verdicts(case, tool):
     return out
 
 
-def caption(tool, r, k_prime=None):
-    if not has_output(r):
-        return "%s\n%s" % (tool, (r or {}).get("error") or (r or {}).get("reason") or "no output")
+def caption(tool, r):
+    """Under a tool's picture: the figures the targets look at."""
     head = "%s: %d faces, %s polygons" % (tool, r["out_faces"], fmt(r.get("polygons")))
+    if r.get("coplanar_polygons") is not None:
+        head += " (%d coplanar)" % r["coplanar_polygons"]
     if regions_of(r):
         head += ", %d regions" % regions_of(r)
     away = r.get("facing_away")
@@ -168,7 +169,7 @@ def caption(tool, r, k_prime=None):
                       "away %s%%  dev %s deg" % (fmt(None if away is None else 100 * away, "%.2f"),
                                                  fmt(r.get("normal_deviation_deg"), "%.1f")),
                       "H max %s  %s" % (fmt(r.get("hausdorff_max"), "%.2e"), validity_label(r)),
-                      "time %s s" % fmt(r.get("t_total_s", r.get("t_mesh_s")), "%.2f")])
+                      "time %s s" % fmt(r.get("t_total_s", r.get("t_mesh_s")), "%.3g")])
 
 
 def draw_panel(case, out_png, size):
@@ -178,7 +179,7 @@ def draw_panel(case, out_png, size):
     for tool in ["ours", "cgal", "qecd"]:
         r = case.get(tool) or {}
         mesh = r.get("out_mesh")
-        if mesh and os.path.exists(mesh):
+        if has_output(r) and os.path.exists(mesh):
             items.append((mesh, labels_path(mesh) if os.path.exists(labels_path(mesh)) else None, caption(tool, r)))
     render_mesh.panel(items, out_png, up=case["up"], size=size)
 
