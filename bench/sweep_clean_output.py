@@ -205,6 +205,16 @@ def picture(case, folder, args):
         args.pictures = "none"
 
 
+def pass_rate(cases, tool, key):
+    """(passed, cases) of a target over the cases where it applies."""
+    results = [c["verdicts"][tool][key][1] for c in cases if key in c["verdicts"].get(tool, {})]
+    return sum(results), len(results)
+
+
+def corpus_of(case):
+    return "CAD corpus" if os.path.abspath(case["mesh_path"]).startswith(CAD_DIR) else "CGAL meshes"
+
+
 def summary(cases):
     lines, table = [], {}
     header = "%-25s %-9s %-17s %-17s  %s" % ("target", "required", "ours", "cgal", "statement")
@@ -227,6 +237,15 @@ def summary(cases):
         verdict = "   [no case]" if rate is None else "" if rate >= required else "   [NOT MET]"
         lines.append("%-25s %-9s %-17s %-17s  %s%s" % (key, "%g%%" % (100 * required), cell("ours"), cell("cgal"),
                                                       statement, verdict))
+    corpora = sorted({corpus_of(c) for c in cases})
+    if len(corpora) > 1:
+        lines += ["", "Ours by corpus:", ("%-25s " % "target" + " ".join("%-17s" % name for name in corpora)).rstrip()]
+        for key, _, _, _, _ in TARGETS:
+            cells = []
+            for name in corpora:
+                passed, total = pass_rate([c for c in cases if corpus_of(c) == name], "ours", key)
+                cells.append("%-17s" % ("-" if not total else "%5.1f%% (%d/%d)" % (100 * passed / total, passed, total)))
+            lines.append(("%-25s " % key + " ".join(cells)).rstrip())
     lines.append("")
     lines.append("Worst cases of ours per target (value: larger is worse):")
     for key in table:
@@ -294,7 +313,9 @@ def main():
     if not (ours and mesh_distance):
         sys.exit("sweep: build vsa-bench and mesh-distance first (bench/README.md)")
 
-    out_dir = args.out or os.path.join(REPO, "out", "bench", datetime.datetime.now().strftime("%Y%m%d-%H%M%S"))
+    # Absolute, so that the records' mesh paths hold wherever --summarize --redraw runs from.
+    out_dir = os.path.abspath(args.out or os.path.join(REPO, "out", "bench",
+                                                       datetime.datetime.now().strftime("%Y%m%d-%H%M%S")))
     for sub in ["meshes", "pictures"]:
         os.makedirs(os.path.join(out_dir, sub), exist_ok=True)
     cases = []
