@@ -57,11 +57,12 @@ struct Options
     int iterations = 20;
     unsigned seed = 1;
     std::string outPath;
+    std::string polygonLabelsPath;
 };
 
 const char *const kUsage =
     "usage: cgal-vsa-bench --mesh FILE --k N [--metric l21|l2] [--init random|farthest|hierarchical]\n"
-    "                      [--iterations N] [--seed S] [--out FILE.off]\n"
+    "                      [--iterations N] [--seed S] [--out FILE.off] [--polygon-labels FILE]\n"
     "Runs CGAL's Variational_shape_approximation and prints one JSON line.\n";
 
 bool ParseOptions(int argc, char **argv, Options &options, std::string &error)
@@ -80,6 +81,7 @@ bool ParseOptions(int argc, char **argv, Options &options, std::string &error)
         else if (flag == "--iterations") options.iterations = std::atoi(value.c_str());
         else if (flag == "--seed") options.seed = unsigned(std::strtoul(value.c_str(), nullptr, 10));
         else if (flag == "--out") options.outPath = value;
+        else if (flag == "--polygon-labels") options.polygonLabelsPath = value;
         else {
             error = "unknown option " + flag;
             return false;
@@ -264,10 +266,14 @@ int Run(const Options &options)
     line.Add("valid_output", run.cgalSaysPolygonMesh);
     if (!run.cgalSaysPolygonMesh)
         line.Add("reason", "extract_mesh: the triangle soup is not a manifold oriented polygon mesh");
-    vsa_bench::AddOutputQualityKeys(line, input, output);
+    const vsa_bench::PolygonLabels polygons = vsa_bench::AddOutputQualityKeys(line, input, output);
 
     if (!options.outPath.empty() && !WriteOff(options.outPath, run.anchors, run.triangles)) {
         line.Add("error", "cannot write " + options.outPath).Print();
+        return 1;
+    }
+    if (!options.polygonLabelsPath.empty() && !vsa_bench::WritePolygonLabels(options.polygonLabelsPath, polygons)) {
+        line.Add("error", "cannot write " + options.polygonLabelsPath).Print();
         return 1;
     }
     line.Print();

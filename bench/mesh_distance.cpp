@@ -34,10 +34,12 @@ bool LoadOff(PlainMesh &m, const std::string &path, std::string &error)
 
 int main(int argc, char **argv)
 {
-    if (argc != 3) {
-        std::cerr << "usage: mesh-distance INPUT.off SIMPLIFIED.off\n"
+    const bool withLabels = argc == 5 && std::string(argv[3]) == "--polygon-labels";
+    if (argc != 3 && !withLabels) {
+        std::cerr << "usage: mesh-distance INPUT.off SIMPLIFIED.off [--polygon-labels FILE]\n"
                      "Prints one JSON line: validity of SIMPLIFIED and its symmetric Hausdorff distance\n"
-                     "to INPUT (max, mean, RMS as fractions of INPUT's bounding-box diagonal).\n";
+                     "to INPUT (max, mean, RMS as fractions of INPUT's bounding-box diagonal), its planar\n"
+                     "polygons; FILE gets each face's polygon, one per line.\n";
         return 2;
     }
     vsa_bench::JsonLine line;
@@ -49,7 +51,12 @@ int main(int argc, char **argv)
         return 1;
     }
     const vsa_bench::Stopwatch stopwatch;
-    vsa_bench::AddOutputQualityKeys(line, input, simplified);
-    line.Add("t_measure_s", stopwatch.Seconds()).Print();
+    const vsa_bench::PolygonLabels polygons = vsa_bench::AddOutputQualityKeys(line, input, simplified);
+    line.Add("t_measure_s", stopwatch.Seconds());
+    if (withLabels && !vsa_bench::WritePolygonLabels(argv[4], polygons)) {
+        line.Add("error", std::string("cannot write ") + argv[4]).Print();
+        return 1;
+    }
+    line.Print();
     return 0;
 }

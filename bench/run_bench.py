@@ -55,7 +55,8 @@ QECD_PARAMETERS = [
 
 MEASURE_KEYS = ["out_vertices", "out_faces", "manifold", "closed", "oriented", "euler_in", "euler_out",
                 "degenerate_faces", "duplicate_faces", "self_intersections", "closed_in",
-                "hausdorff_max", "hausdorff_mean", "hausdorff_rms", "facing_away"]
+                "hausdorff_max", "hausdorff_mean", "hausdorff_rms", "facing_away", "normal_deviation_deg",
+                "polygons", "polygons_from", "triangles_per_region"]
 
 
 def find_tool(env_name, names):
@@ -106,6 +107,11 @@ def measure_missing(record, mesh_path, out_mesh, mesh_distance, timeout):
     record["measured_by"] = "mesh-distance"
 
 
+def labels_path(out_mesh):
+    """Where a driver writes the polygon label of each face of `out_mesh` (--polygon-labels)."""
+    return os.path.splitext(out_mesh)[0] + ".labels"
+
+
 def write_qecd_script(path, target_faces):
     lines = ["<!DOCTYPE FilterScript>", "<FilterScript>",
              ' <filter name="Simplification: Quadric Edge Collapse Decimation">']
@@ -135,7 +141,8 @@ def run_qecd(mesh_path, target_faces, out_dir, name, mesh_distance, timeout):
     if failed:
         record["error"] = reason
         return record
-    measured, _ = run_json([mesh_distance, mesh_path, out_mesh], timeout)
+    # The polygon labels beside the mesh are for bench/render_mesh.py's outlines.
+    measured, _ = run_json([mesh_distance, mesh_path, out_mesh, "--polygon-labels", labels_path(out_mesh)], timeout)
     measured.pop("input", None)
     measured.pop("simplified", None)
     record.update(measured)

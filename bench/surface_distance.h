@@ -40,6 +40,10 @@ struct SurfaceDistance
     /// way (negative dot product of the two face normals): folds and flipped triangles, which
     /// shade dark where the input does not.
     double facingAway = 0;
+    /// Mean angle, in degrees, between the normal of the approximation's face under each area
+    /// sample and that of its nearest reference face (the samples are spread by area, so the
+    /// mean is area-weighted): 0 for a faithful surface, 180 where a face is turned over.
+    double normalDeviationDeg = 0;
 };
 
 namespace distance_detail {
@@ -126,6 +130,7 @@ struct OneWay
     double max = 0, sum = 0, sumOfSquares = 0;
     long count = 0;
     long facingAway = 0;  ///< area samples whose nearest face's normal opposes their own
+    double angleSumDeg = 0;  ///< of the angles between each area sample's normal and its nearest face's
     bool allFound = true;
 };
 
@@ -165,7 +170,9 @@ inline OneWay MeasureOneWay(const FaceSamples &areaSamples, const std::vector<vc
         result.sum += d;
         result.sumOfSquares += d * d;
         ++result.count;
-        result.facingAway += nearest->face->cN() * areaSamples.normals[i] < 0;
+        const double cosine = nearest->face->cN() * areaSamples.normals[i];
+        result.facingAway += cosine < 0;
+        result.angleSumDeg += vcg::math::ToDeg(std::acos(std::clamp(cosine, -1.0, 1.0)));
     }
     for (const vcg::Point3d &p : featureSamples) {
         const std::optional<NearestFace> nearest = NearestFaceTo(to, grid, p, searchRadius);
@@ -219,6 +226,7 @@ SurfaceDistance MeasureSurfaceDistance(const ReferenceMesh &reference, const App
     result.mean = (forward.sum + backward.sum) / double(count) / diagonal;
     result.rms = std::sqrt((forward.sumOfSquares + backward.sumOfSquares) / double(count)) / diagonal;
     result.facingAway = backward.count > 0 ? double(backward.facingAway) / double(backward.count) : 0;
+    result.normalDeviationDeg = backward.count > 0 ? backward.angleSumDeg / double(backward.count) : 0;
     return result;
 }
 

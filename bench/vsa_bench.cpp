@@ -3,7 +3,8 @@
 //   vsa-bench --mesh FILE --k N --metric l21|l2 --init random|farthest|hierarchical
 //             --iterations N --seed S [--target-error E] [--tolerance T] [--relaxations R]
 //             [--teleport 0|1] [--anchor-threshold A] [--chord-gap G] [--chord-error F]
-//             [--repair-rounds R] [--halving-rounds H] [--project-anchors 0|1] [--out FILE]
+//             [--repair-rounds R] [--halving-rounds H] [--project-anchors 0|1] [--polygonal 0|1]
+//             [--out FILE] [--polygon-labels FILE]
 // The tolerance defaults to 0 so that --iterations Lloyd iterations run (unless the partition
 // cycles), like CGAL's run(N): per-iteration timings compare. --out writes the approximating
 // mesh with each face coloured by its region (format from the extension: ply, off, obj).
@@ -17,6 +18,7 @@
 #include <wrap/io_trimesh/export.h>
 #include <wrap/io_trimesh/import.h>
 
+#include <set>
 #include <string>
 
 namespace {
@@ -32,7 +34,7 @@ class BMesh : public vcg::tri::TriMesh<std::vector<BVertex>, std::vector<BFace>>
 
 struct Options
 {
-    std::string mesh, out, metric = "l21", init = "hierarchical";
+    std::string mesh, out, polygonLabels, metric = "l21", init = "hierarchical";
     vcg::tri::vsa::ApproximationParam param;
     vcg::tri::vsa::MeshingParam meshing;
 };
@@ -69,6 +71,8 @@ std::string Parse(int argc, char **argv, Options &o)
             else if (arg == "--repair-rounds") o.meshing.repairRounds = std::stoi(value);
             else if (arg == "--halving-rounds") o.meshing.halvingRounds = std::stoi(value);
             else if (arg == "--project-anchors") o.meshing.projectAnchors = ParseFlag(value);
+            else if (arg == "--polygonal") o.meshing.polygonal = ParseFlag(value);
+            else if (arg == "--polygon-labels") o.polygonLabels = value;
             else if (arg == "--metric") o.metric = value;
             else if (arg == "--init") o.init = value;
             else return "unknown option " + arg;
@@ -174,9 +178,14 @@ int main(int argc, char **argv)
             .Add("carving_rounds", meshing.carvingRounds)
             .Add("pieces_carved", meshing.piecesCarved)
             .Add("close_pairs", meshing.closePairs);
-        vsa_bench::AddOutputQualityKeys(json, m, output);
+        const int regionsOut = int(std::set<int>(meshing.faceRegion.begin(), meshing.faceRegion.end()).size());
+        const vsa_bench::PolygonLabels polygons = vsa_bench::AddOutputQualityKeys(json, m, output, regionsOut);
         if (!o.out.empty() && !WriteApproximation(output, meshing.faceRegion, partition.proxyCount, o.out)) {
             json.Add("error", "cannot write " + o.out).Print();
+            return 1;
+        }
+        if (!o.polygonLabels.empty() && !vsa_bench::WritePolygonLabels(o.polygonLabels, polygons)) {
+            json.Add("error", "cannot write " + o.polygonLabels).Print();
             return 1;
         }
     } catch (const std::exception &e) {

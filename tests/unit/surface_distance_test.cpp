@@ -26,6 +26,7 @@ TEST(SurfaceDistance, SameCubeIsAtZeroAndFacesTheSameWay)
     ASSERT_TRUE(d.valid);
     EXPECT_NEAR(d.max, 0, 1e-6);
     EXPECT_EQ(d.facingAway, 0);
+    EXPECT_NEAR(d.normalDeviationDeg, 0, 1e-3);
 }
 
 TEST(SurfaceDistance, FacingAwayIsTheAreaShareOfFlippedFaces)
@@ -38,9 +39,12 @@ TEST(SurfaceDistance, FacingAwayIsTheAreaShareOfFlippedFaces)
     ASSERT_TRUE(d.valid);
     EXPECT_NEAR(d.max, 0, 1e-6);  // the same surface: only the orientation differs
     EXPECT_NEAR(d.facingAway, 1.0 / 6, 1e-3);
+    EXPECT_NEAR(d.normalDeviationDeg, 180.0 / 6, 0.2);  // a sixth of the area turned by 180 degrees
 
     FlipFaces(turned, 8, turned.face.size());
-    EXPECT_EQ(vsa_bench::MeasureSurfaceDistance(cube, turned).facingAway, 1.0);
+    const vsa_bench::SurfaceDistance all = vsa_bench::MeasureSurfaceDistance(cube, turned);
+    EXPECT_EQ(all.facingAway, 1.0);
+    EXPECT_NEAR(all.normalDeviationDeg, 180, 0.2);
 }
 
 }  // namespace
