@@ -380,7 +380,7 @@ private:
             }
         }
         for (int c = 0; c < mesh_.componentCount; ++c) moments.push_back(metric.EmptyMoments(firstFace[c].point));
-        for (int f = 0; f < mesh_.FaceCount(); ++f) metric.Add(moments[mesh_.component[f]], f);
+        SumMoments(metric, [&](size_t f) { return mesh_.component[f]; }, mesh_.component.size(), moments);
         double energy = 0;
         for (int c = 0; c < mesh_.componentCount; ++c)
             energy += metric.Energy(moments[c], metric.Fit(moments[c], firstFace[c]));
@@ -500,9 +500,9 @@ private:
 
         std::vector<typename Metric::Moments> moments;
         for (int r = 0; r < regionCount; ++r) moments.push_back(metric.EmptyMoments(state_.partition.proxies[r].point));
+        SumMoments(metric, [&](size_t f) { return faceRegion[f]; }, faceRegion.size(), moments);
         std::vector<std::pair<int, int>> pairs;
         for (int f = 0; f < mesh_.FaceCount(); ++f) {
-            metric.Add(moments[faceRegion[f]], f);
             for (int g : mesh_.neighbors[f])
                 if (g > f && faceRegion[g] != faceRegion[f])
                     pairs.emplace_back(std::min(faceRegion[f], faceRegion[g]), std::max(faceRegion[f], faceRegion[g]));
