@@ -71,9 +71,11 @@ void SumByKey(size_t itemCount, std::vector<Value> &sums, KeyOf &&keyOf, Add &&a
 {
     const int chunks = ChunkCount(itemCount);
     std::vector<std::vector<std::pair<int, Value>>> partials(chunks);
-    std::vector<std::vector<int>> slots(MaxThreads());  // per thread: key -> its partial, or -1
+    // Per thread: key -> its partial in the current chunk, or -1. (Not named "slots": Qt
+    // defines that as a macro, and the plugins include Qt.)
+    std::vector<std::vector<int>> partialOfKey(MaxThreads());
     ForEachChunk(itemCount, [&](int chunk, size_t begin, size_t end) {
-        std::vector<int> &slot = slots[ThreadIndex()];
+        std::vector<int> &slot = partialOfKey[ThreadIndex()];
         slot.resize(sums.size(), -1);
         std::vector<std::pair<int, Value>> &mine = partials[chunk];
         for (size_t item = begin; item < end; ++item) {
