@@ -50,6 +50,8 @@ inline FaceGeometry ComputeFaceGeometry(const IndexedMesh &mesh, bool withSecond
     std::vector<Box3d> chunkBox(ChunkCount(size_t(faceCount)));
     std::vector<double> chunkMaxArea(chunkBox.size(), 0.0);
     ForEachChunk(size_t(faceCount), [&](int chunk, size_t begin, size_t end) {
+        Box3d box;  // kept here, stored once: neighbouring chunks' entries share cache lines
+        double maxArea = 0;
         for (size_t f = begin; f < end; ++f) {
             const Point3d &p0 = mesh.positions[mesh.faces[f][0]];
             const Point3d &p1 = mesh.positions[mesh.faces[f][1]];
@@ -61,9 +63,9 @@ inline FaceGeometry ComputeFaceGeometry(const IndexedMesh &mesh, bool withSecond
             g.area[f] = hasNormal ? 0.5 * doubleArea : 0.0;
             g.normal[f] = hasNormal ? cross / doubleArea : Point3d(0, 0, 0);
             g.centroid[f] = (p0 + p1 + p2) / 3.0;
-            chunkMaxArea[chunk] = std::max(chunkMaxArea[chunk], g.area[f]);
+            maxArea = std::max(maxArea, g.area[f]);
             if (hasNormal)
-                for (const Point3d *p : {&p0, &p1, &p2}) chunkBox[chunk].Add(*p);
+                for (const Point3d *p : {&p0, &p1, &p2}) box.Add(*p);
             if (withSecondMoments) {
                 // For a triangle, integral of (x-c)(x-c)^T = area/12 * sum of e_i e_i^T, e_i = p_i - c.
                 SymmetricMatrix3 m{0, 0, 0, 0, 0, 0};
@@ -80,6 +82,8 @@ inline FaceGeometry ComputeFaceGeometry(const IndexedMesh &mesh, bool withSecond
                 g.secondMoment[f] = m;
             }
         }
+        chunkBox[chunk] = box;
+        chunkMaxArea[chunk] = maxArea;
     });
     Box3d box;
     for (size_t c = 0; c < chunkBox.size(); ++c) {

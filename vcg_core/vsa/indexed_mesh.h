@@ -159,7 +159,7 @@ inline void LinkFaces(IndexedMesh &im, MeshDiagnostics &diag)
     const size_t vertexCount = bucketOffset.size() - 1;
     std::vector<EdgeCounts> counts(ChunkCount(vertexCount));
     ForEachChunk(vertexCount, [&](int chunk, size_t begin, size_t end) {
-        EdgeCounts &n = counts[chunk];
+        EdgeCounts n;  // counted here, stored once: neighbouring chunks' counts share a cache line
         for (size_t v = begin; v < end; ++v) {
             const auto first = edges.begin() + bucketOffset[v], last = edges.begin() + bucketOffset[v + 1];
             std::sort(first, last, [](const HalfEdge &x, const HalfEdge &y) {
@@ -182,6 +182,7 @@ inline void LinkFaces(IndexedMesh &im, MeshDiagnostics &diag)
                 lo = hi;
             }
         }
+        counts[chunk] = n;
     });
     for (const EdgeCounts &n : counts) {
         diag.borderEdges += n.border;
