@@ -2,13 +2,24 @@
 # Makes the large benchmark meshes: CGAL's armadillo Loop-subdivided 1, 2 and 3 times (208k,
 # 832k and 3.3M faces) into out/large/ (git-ignored). Needs the loop-subdivide target:
 #   cmake --build build --target loop-subdivide
+# --steps N subdivides up to N times instead (4: also the 13.3M-face mesh, about 0.7 GB of OFF).
 # LOOP_SUBDIVIDE names another binary, VSA_MESHES another folder of sample meshes.
 set -eu
 root=$(cd "$(dirname "$0")/.." && pwd)
 tool=${LOOP_SUBDIVIDE:-$root/build/bench/loop-subdivide}
 meshes=${VSA_MESHES:-$root/.deps/cgal-data/meshes}
+most=3
+if [ $# -gt 0 ]; then
+    case "$#:${1:-}:${2:-}" in
+    2:--steps:*[!0-9]* | 2:--steps: ) echo "usage: $0 [--steps N]" >&2; exit 2 ;;
+    2:--steps:*) most=$2 ;;
+    *) echo "usage: $0 [--steps N]" >&2; exit 2 ;;
+    esac
+fi
 mkdir -p "$root/out/large"
-for steps in 1 2 3; do
+steps=1
+while [ "$steps" -le "$most" ]; do
     out="$root/out/large/armadillo-loop$steps.off"
     [ -s "$out" ] || "$tool" "$meshes/armadillo.off" "$out" "$steps"
+    steps=$((steps + 1))
 done

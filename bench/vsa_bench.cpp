@@ -13,6 +13,7 @@
 
 #include <vsa/approximation.h>
 #include <vsa/meshing.h>
+#include <vsa/parallel.h>
 
 #include <vcg/complex/complex.h>
 #include <wrap/io_trimesh/export.h>
@@ -128,6 +129,7 @@ int main(int argc, char **argv)
         return 1;
     }
     json.Add("faces", m.fn).Add("k", o.param.proxyCount).Add("metric", o.metric).Add("init", o.init);
+    const double rssAfterLoadMb = vsa_bench::CurrentRssMb();
 
     try {
         vsa_bench::Stopwatch clock;
@@ -141,6 +143,7 @@ int main(int argc, char **argv)
         const double tIterations = clock.Seconds();
         const int faces = approximation.Mesh().FaceCount();
         const ApproximationResult partition = approximation.Result();
+        const double peakRssPartitionMb = vsa_bench::PeakRssMb();
         clock.Restart();
         BMesh output;
         const MeshingReport meshing =
@@ -155,6 +158,9 @@ int main(int argc, char **argv)
             .Add("t_total_s", tSetup + tSeed + tIterations + tMesh)
             .Add("energy", partition.energy)
             .Add("peak_rss_mb", peakRssMb)
+            .Add("rss_after_load_mb", rssAfterLoadMb)
+            .Add("peak_rss_partition_mb", peakRssPartitionMb)
+            .Add("threads", vcg::tri::vsa::MaxThreads())
             .Add("seed", o.param.randomSeed)
             .Add("iterations", o.param.maxIterations)
             .Add("proxies", partition.proxyCount)

@@ -39,6 +39,9 @@ foreach(dir IN LISTS VSA_FILTERPLUGIN_MESHLAB_DIR)
   # vcg_core's headers, but not the vsa::vcg_core target: that would also put the 2020.09 vcglib on
   # the include path, in front of the tree's own vcglib which CMeshO must be compiled with.
   target_include_directories(${target} PRIVATE "${PROJECT_SOURCE_DIR}/vcg_core")
+  if(OpenMP_CXX_FOUND)  # MeshLab itself links GCC's libgomp: the plugin shares its thread pool
+    target_link_libraries(${target} PRIVATE OpenMP::OpenMP_CXX)
+  endif()
   target_compile_options(${target} PRIVATE ${VSA_WARNINGS})
   set_target_properties(${target} PROPERTIES OUTPUT_NAME filter_vsa
     LIBRARY_OUTPUT_DIRECTORY "${CMAKE_CURRENT_BINARY_DIR}/meshlab-${version}")

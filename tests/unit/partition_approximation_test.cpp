@@ -8,6 +8,7 @@
 
 #include <limits>
 #include <set>
+#include <tuple>
 
 using namespace vcg::tri::vsa;
 using vcg::Point3d;
@@ -90,6 +91,30 @@ TEST(PartitionApproximation, SeedingFindsTheFlatPiecesOfACadModel)
         ASSERT_TRUE(r.ok) << r.error;
         EXPECT_LT(r.energy, 1e-4) << "init " << int(init);
         EXPECT_EQ(vsa_test::CheckPartition(im, r.partition.faceRegion, 100), "");
+    }
+}
+
+TEST(PartitionApproximation, HierarchicalSeedingEndsNoHigherThanRandom)
+{
+    // The seeding's energy after 30 plain Lloyd iterations (no teleports), summed over seeds 1-4:
+    // hierarchical against random. On the CAD model random seeds leave regions across creases
+    // that Lloyd cannot move (measured: 0.06 of random's); on the smooth armadillo the two end
+    // close (0.98), and hierarchical must not end above.
+    for (const auto &c : {std::make_tuple("fandisk.off", 50, 0.25), std::make_tuple("armadillo.off", 100, 1.0)}) {
+        const IndexedMesh im = vsa_test::LoadCgalMesh(std::get<0>(c));
+        double hierarchical = 0, random = 0;
+        for (uint64_t seed : {1u, 2u, 3u, 4u}) {
+            for (SeedingMethod init : {SeedingMethod::Hierarchical, SeedingMethod::Random}) {
+                ApproximationParam p = Params(std::get<1>(c), MetricKind::L21, init, seed);
+                p.maxIterations = 30;
+                p.tolerance = 0;
+                p.teleport = false;
+                const ApproximationResult r = Approximate(im, p);
+                ASSERT_TRUE(r.ok) << r.error;
+                (init == SeedingMethod::Hierarchical ? hierarchical : random) += r.energy;
+            }
+        }
+        EXPECT_LE(hierarchical, std::get<2>(c) * random) << std::get<0>(c);
     }
 }
 

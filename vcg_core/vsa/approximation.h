@@ -90,10 +90,12 @@ class Approximation
 {
     // Defined first: the members below deduce their return types through it.
     /// Calls `f` with the metric chosen in Param and its workspace; hot loops are instantiated
-    /// for each metric.
+    /// for each metric. Computes the faces' geometry first if Run released it.
     template <class F>
     decltype(auto) WithMetric(F &&f)
     {
+        if (geometry_.FaceCount() != mesh_.FaceCount())
+            geometry_ = ComputeFaceGeometry(mesh_, param_.metric == MetricKind::L2);
         if (param_.metric == MetricKind::L2) return f(L2Metric(geometry_), l2Workspace_);
         return f(L21Metric(geometry_), l21Workspace_);
     }
@@ -122,7 +124,6 @@ public:
                                  ": the mesh has that many connected components and each needs its own proxy.");
             }
         }
-        geometry_ = ComputeFaceGeometry(mesh_, param_.metric == MetricKind::L2);
         referenceEnergy_ = WithMetric([&](const auto &metric, auto &) { return OneProxyPerComponentEnergy(metric); });
     }
 
@@ -170,8 +171,8 @@ public:
     /// Param::tolerance, the partition repeats, or `maxIterations` were run; with
     /// Param::teleport, converging or stalling (under 0.1% per iteration, or two iterations
     /// without a new best) triggers a teleport while that keeps lowering the energy.
-    /// Leaves the best partition seen since the last change of proxy count as the current one.
-    /// Returns the number of iterations run.
+    /// Leaves the best partition seen since the last change of proxy count as the current one,
+    /// and frees the scratch memory (rebuilt on demand). Returns the number of iterations run.
     int Run(int maxIterations, CallBackPos *cb = nullptr)
     {
         constexpr double kTeleportStall = 1e-3;
@@ -184,12 +185,13 @@ public:
         double bestAtLastTeleport = std::numeric_limits<double>::infinity();
         std::string stop = "stopped after the maximum of " + std::to_string(maxIterations) + " iterations";
         while (done < maxIterations) {
+            SaveBest();
             WithMetric([&](const auto &metric, auto &ws) { LloydIteration(mesh_, metric, state_, ws); });
             ++done;
             ++iterations_;
             const double energy = Energy();
             history_.push_back(energy);
-            if (!hasBest_ || energy < best_.Energy()) {
+            if (!hasBest_ || energy < BestEnergy()) {
                 KeepAsBest();
                 sinceBest = 0;
             } else {
@@ -206,8 +208,9 @@ public:
             previous = energy;
             if (cb) cb(maxIterations > 0 ? 100 * done / maxIterations : 100, "VSA: Lloyd iterations");
             if (!cycled && !stalled) continue;
-            if (param_.teleport && done < maxIterations && best_.Energy() < bestAtLastTeleport) {
-                bestAtLastTeleport = best_.Energy();
+            if (param_.teleport && done < maxIterations && BestEnergy() < bestAtLastTeleport) {
+                bestAtLastTeleport = BestEnergy();
+                SaveBest();
                 if (WithMetric([&](const auto &metric, auto &ws) { return TeleportWith(metric, ws); })) {
                     ++teleports;
                     previous = Energy();
@@ -219,7 +222,17 @@ public:
                           : "converged after " + std::to_string(done) + " iterations";
             break;
         }
-        if (hasBest_) state_ = best_;
+        if (hasBest_ && !bestIsState_) {
+            state_ = std::move(best_);
+            bestIsState_ = true;
+        }
+        // The copy, the faces' geometry and the flood's workspace are rebuilt by whatever comes
+        // next, if anything: the meshing that usually follows needs the memory (about 150 bytes
+        // per face) more than another Run needs the pass over the faces that rebuilds them.
+        best_ = RegionState();
+        geometry_ = FaceGeometry();
+        l21Workspace_ = PartitionWorkspace<L21Metric>();
+        l2Workspace_ = PartitionWorkspace<L2Metric>();
         std::ostringstream s;
         s << "Lloyd iterations " << stop;
         if (teleports) s << ", with " << teleports << " teleport(s)";
@@ -285,6 +298,7 @@ public:
     bool Teleport()
     {
         RequireInitialized("Teleport");
+        SaveBest();
         return WithMetric([&](const auto &metric, auto &ws) { return TeleportWith(metric, ws); });
     }
 
@@ -380,7 +394,7 @@ private:
             }
         }
         for (int c = 0; c < mesh_.componentCount; ++c) moments.push_back(metric.EmptyMoments(firstFace[c].point));
-        for (int f = 0; f < mesh_.FaceCount(); ++f) metric.Add(moments[mesh_.component[f]], f);
+        SumMoments(metric, [&](size_t f) { return mesh_.component[f]; }, mesh_.component.size(), moments);
         double energy = 0;
         for (int c = 0; c < mesh_.componentCount; ++c)
             energy += metric.Energy(moments[c], metric.Fit(moments[c], firstFace[c]));
@@ -398,11 +412,23 @@ private:
         if (currentIsFlooded) KeepAsBest();
     }
 
+    /// The current state is the best: it is copied only when it is about to change (SaveBest),
+    /// so that a run that ends on its best partition never copies it.
     void KeepAsBest()
     {
-        best_ = state_;
         hasBest_ = true;
+        bestIsState_ = true;
     }
+
+    /// Call before changing the state: keeps a copy of it when it is the best.
+    void SaveBest()
+    {
+        if (!hasBest_ || !bestIsState_) return;
+        best_ = state_;
+        bestIsState_ = false;
+    }
+
+    double BestEnergy() const { return bestIsState_ ? state_.Energy() : best_.Energy(); }
 
     /// FNV-1a over the labels: two equal hashes mean the Lloyd loop came back to a partition.
     uint64_t HashLabels() const
@@ -500,9 +526,9 @@ private:
 
         std::vector<typename Metric::Moments> moments;
         for (int r = 0; r < regionCount; ++r) moments.push_back(metric.EmptyMoments(state_.partition.proxies[r].point));
+        SumMoments(metric, [&](size_t f) { return faceRegion[f]; }, faceRegion.size(), moments);
         std::vector<std::pair<int, int>> pairs;
         for (int f = 0; f < mesh_.FaceCount(); ++f) {
-            metric.Add(moments[faceRegion[f]], f);
             for (int g : mesh_.neighbors[f])
                 if (g > f && faceRegion[g] != faceRegion[f])
                     pairs.emplace_back(std::min(faceRegion[f], faceRegion[g]), std::max(faceRegion[f], faceRegion[g]));
@@ -537,8 +563,9 @@ private:
     std::vector<std::string> messages_;
     bool initialized_ = false;
     RegionState state_;
-    RegionState best_;
+    RegionState best_;   ///< the best partition, when it is not the current one
     bool hasBest_ = false;
+    bool bestIsState_ = false;  ///< the best partition is state_ itself (best_ is stale)
     std::vector<double> history_;
     std::vector<uint64_t> labelHashes_;
     int iterations_ = 0;

@@ -4,6 +4,7 @@
 #define VSA_FACE_GEOMETRY_H
 
 #include <vsa/indexed_mesh.h>
+#include <vsa/parallel.h>
 
 #include <algorithm>
 #include <array>
@@ -36,7 +37,8 @@ struct FaceGeometry
     bool HasSecondMoments() const { return secondMoment.size() == area.size(); }
 };
 
-/// Fills the per-face arrays of `mesh`; second moments only when `withSecondMoments`.
+/// Fills the per-face arrays of `mesh`; second moments only when `withSecondMoments`. In
+/// parallel over chunks of faces: the largest area and the box are exact whatever the order.
 inline FaceGeometry ComputeFaceGeometry(const IndexedMesh &mesh, bool withSecondMoments)
 {
     const int faceCount = mesh.FaceCount();
@@ -45,36 +47,48 @@ inline FaceGeometry ComputeFaceGeometry(const IndexedMesh &mesh, bool withSecond
     g.normal.resize(faceCount);
     g.centroid.resize(faceCount);
     if (withSecondMoments) g.secondMoment.resize(faceCount);
-    Box3d box;
-    for (int f = 0; f < faceCount; ++f) {
-        const Point3d &p0 = mesh.positions[mesh.faces[f][0]];
-        const Point3d &p1 = mesh.positions[mesh.faces[f][1]];
-        const Point3d &p2 = mesh.positions[mesh.faces[f][2]];
-        const Point3d cross = (p1 - p0) ^ (p2 - p0);
-        const double doubleArea = cross.Norm();
-        // Below the smallest normal double the direction is noise: treat the face as flat zero.
-        const bool hasNormal = std::isfinite(doubleArea) && doubleArea > std::numeric_limits<double>::min();
-        g.area[f] = hasNormal ? 0.5 * doubleArea : 0.0;
-        g.normal[f] = hasNormal ? cross / doubleArea : Point3d(0, 0, 0);
-        g.centroid[f] = (p0 + p1 + p2) / 3.0;
-        g.maxArea = std::max(g.maxArea, g.area[f]);
-        if (hasNormal)
-            for (const Point3d *p : {&p0, &p1, &p2}) box.Add(*p);
-        if (withSecondMoments) {
-            // For a triangle, integral of (x-c)(x-c)^T = area/12 * sum of e_i e_i^T, e_i = p_i - c.
-            SymmetricMatrix3 m{0, 0, 0, 0, 0, 0};
-            for (const Point3d *p : {&p0, &p1, &p2}) {
-                const Point3d e = *p - g.centroid[f];
-                m[0] += e[0] * e[0];
-                m[1] += e[1] * e[1];
-                m[2] += e[2] * e[2];
-                m[3] += e[0] * e[1];
-                m[4] += e[0] * e[2];
-                m[5] += e[1] * e[2];
+    std::vector<Box3d> chunkBox(ChunkCount(size_t(faceCount)));
+    std::vector<double> chunkMaxArea(chunkBox.size(), 0.0);
+    ForEachChunk(size_t(faceCount), [&](int chunk, size_t begin, size_t end) {
+        Box3d box;  // kept here, stored once: neighbouring chunks' entries share cache lines
+        double maxArea = 0;
+        for (size_t f = begin; f < end; ++f) {
+            const Point3d &p0 = mesh.positions[mesh.faces[f][0]];
+            const Point3d &p1 = mesh.positions[mesh.faces[f][1]];
+            const Point3d &p2 = mesh.positions[mesh.faces[f][2]];
+            const Point3d cross = (p1 - p0) ^ (p2 - p0);
+            const double doubleArea = cross.Norm();
+            // Below the smallest normal double the direction is noise: treat the face as flat zero.
+            const bool hasNormal = std::isfinite(doubleArea) && doubleArea > std::numeric_limits<double>::min();
+            g.area[f] = hasNormal ? 0.5 * doubleArea : 0.0;
+            g.normal[f] = hasNormal ? cross / doubleArea : Point3d(0, 0, 0);
+            g.centroid[f] = (p0 + p1 + p2) / 3.0;
+            maxArea = std::max(maxArea, g.area[f]);
+            if (hasNormal)
+                for (const Point3d *p : {&p0, &p1, &p2}) box.Add(*p);
+            if (withSecondMoments) {
+                // For a triangle, integral of (x-c)(x-c)^T = area/12 * sum of e_i e_i^T, e_i = p_i - c.
+                SymmetricMatrix3 m{0, 0, 0, 0, 0, 0};
+                for (const Point3d *p : {&p0, &p1, &p2}) {
+                    const Point3d e = *p - g.centroid[f];
+                    m[0] += e[0] * e[0];
+                    m[1] += e[1] * e[1];
+                    m[2] += e[2] * e[2];
+                    m[3] += e[0] * e[1];
+                    m[4] += e[0] * e[2];
+                    m[5] += e[1] * e[2];
+                }
+                for (double &x : m) x *= g.area[f] / 12.0;
+                g.secondMoment[f] = m;
             }
-            for (double &x : m) x *= g.area[f] / 12.0;
-            g.secondMoment[f] = m;
         }
+        chunkBox[chunk] = box;
+        chunkMaxArea[chunk] = maxArea;
+    });
+    Box3d box;
+    for (size_t c = 0; c < chunkBox.size(); ++c) {
+        g.maxArea = std::max(g.maxArea, chunkMaxArea[c]);
+        if (!chunkBox[c].IsNull()) box.Add(chunkBox[c]);
     }
     if (!box.IsNull()) g.diagonal = box.Diag();
     return g;

@@ -3,6 +3,8 @@
 #ifndef VSA_INDEXED_MESH_H
 #define VSA_INDEXED_MESH_H
 
+#include <vsa/parallel.h>
+
 #include <vcg/complex/complex.h>
 
 #include <algorithm>
@@ -150,29 +152,42 @@ inline void LinkFaces(IndexedMesh &im, MeshDiagnostics &diag)
         edges[k] = {std::max(im.faces[e / 3][e % 3], im.faces[e / 3][(e % 3 + 1) % 3]), e};
     }
     // Each small bucket sorted by (upper vertex, faceEdge): then the half-edges of one edge
-    // are consecutive, in faceEdge order.
+    // are consecutive, in faceEdge order. Buckets are independent: in parallel, each chunk of
+    // vertices counting its own edges.
     im.neighbors.assign(faceCount, {-1, -1, -1});
-    for (size_t v = 0; v + 1 < bucketOffset.size(); ++v) {
-        const auto first = edges.begin() + bucketOffset[v], last = edges.begin() + bucketOffset[v + 1];
-        std::sort(first, last, [](const HalfEdge &x, const HalfEdge &y) {
-            return x.upperVertex != y.upperVertex ? x.upperVertex < y.upperVertex : x.faceEdge < y.faceEdge;
-        });
-        for (auto lo = first; lo != last;) {
-            auto hi = lo + 1;
-            while (hi != last && hi->upperVertex == lo->upperVertex) ++hi;
-            if (hi - lo == 1) {
-                ++diag.borderEdges;
-            } else if (hi - lo == 2) {
-                const int fa = lo[0].faceEdge / 3, ia = lo[0].faceEdge % 3;
-                const int fb = lo[1].faceEdge / 3, ib = lo[1].faceEdge % 3;
-                im.neighbors[fa][ia] = fb;
-                im.neighbors[fb][ib] = fa;
-                if (im.faces[fa][ia] == im.faces[fb][ib]) ++diag.inconsistentEdges;
-            } else {
-                ++diag.nonManifoldEdges;
+    struct EdgeCounts { int border = 0, nonManifold = 0, inconsistent = 0; };
+    const size_t vertexCount = bucketOffset.size() - 1;
+    std::vector<EdgeCounts> counts(ChunkCount(vertexCount));
+    ForEachChunk(vertexCount, [&](int chunk, size_t begin, size_t end) {
+        EdgeCounts n;  // counted here, stored once: neighbouring chunks' counts share a cache line
+        for (size_t v = begin; v < end; ++v) {
+            const auto first = edges.begin() + bucketOffset[v], last = edges.begin() + bucketOffset[v + 1];
+            std::sort(first, last, [](const HalfEdge &x, const HalfEdge &y) {
+                return x.upperVertex != y.upperVertex ? x.upperVertex < y.upperVertex : x.faceEdge < y.faceEdge;
+            });
+            for (auto lo = first; lo != last;) {
+                auto hi = lo + 1;
+                while (hi != last && hi->upperVertex == lo->upperVertex) ++hi;
+                if (hi - lo == 1) {
+                    ++n.border;
+                } else if (hi - lo == 2) {
+                    const int fa = lo[0].faceEdge / 3, ia = lo[0].faceEdge % 3;
+                    const int fb = lo[1].faceEdge / 3, ib = lo[1].faceEdge % 3;
+                    im.neighbors[fa][ia] = fb;
+                    im.neighbors[fb][ib] = fa;
+                    if (im.faces[fa][ia] == im.faces[fb][ib]) ++n.inconsistent;
+                } else {
+                    ++n.nonManifold;
+                }
+                lo = hi;
             }
-            lo = hi;
         }
+        counts[chunk] = n;
+    });
+    for (const EdgeCounts &n : counts) {
+        diag.borderEdges += n.border;
+        diag.nonManifoldEdges += n.nonManifold;
+        diag.inconsistentEdges += n.inconsistent;
     }
 }
 
@@ -229,12 +244,14 @@ inline std::vector<char> DegenerateFaceMask(const IndexedMesh &im)
 {
     const double tinyArea = 1e-14 * FiniteBox(im.positions).SquaredDiag();
     std::vector<char> degenerate(im.faces.size(), 0);
-    for (size_t f = 0; f < im.faces.size(); ++f) {
-        const auto &t = im.faces[f];
-        const double doubleArea =
-            ((im.positions[t[1]] - im.positions[t[0]]) ^ (im.positions[t[2]] - im.positions[t[0]])).Norm();
-        degenerate[f] = RepeatsVertex(t) || !(doubleArea > 2 * tinyArea) || !std::isfinite(doubleArea);
-    }
+    ForEachChunk(im.faces.size(), [&](int, size_t begin, size_t end) {
+        for (size_t f = begin; f < end; ++f) {
+            const auto &t = im.faces[f];
+            const double doubleArea =
+                ((im.positions[t[1]] - im.positions[t[0]]) ^ (im.positions[t[2]] - im.positions[t[0]])).Norm();
+            degenerate[f] = RepeatsVertex(t) || !(doubleArea > 2 * tinyArea) || !std::isfinite(doubleArea);
+        }
+    });
     return degenerate;
 }
 

@@ -4,6 +4,7 @@
 #define VSA_METRICS_H
 
 #include <vsa/face_geometry.h>
+#include <vsa/parallel.h>
 #include <vsa/proxy.h>
 
 #include <Eigen/Eigenvalues>
@@ -234,6 +235,17 @@ private:
 
     const FaceGeometry *g_;
 };
+
+/// Adds the moments of every face to those of its key (keyOf(face), -1 for none), in parallel
+/// (SumByKey: the same bits on any number of threads).
+template <class Metric, class KeyOf>
+void SumMoments(const Metric &metric, KeyOf &&keyOf, size_t faceCount, std::vector<typename Metric::Moments> &moments)
+{
+    using Moments = typename Metric::Moments;
+    SumByKey(
+        faceCount, moments, keyOf, [&](Moments &m, size_t f) { metric.Add(m, int(f)); },
+        [&](Moments &m, const Moments &part) { metric.Add(m, part); });
+}
 
 }  // namespace vsa
 }  // namespace tri

@@ -6,6 +6,7 @@
 
 #include <vsa/indexed_mesh.h>
 #include <vsa/metrics.h>
+#include <vsa/parallel.h>
 #include <vsa/proxy.h>
 
 #include <algorithm>
@@ -186,11 +187,13 @@ void PrepareNodes(const Graph &mesh, const Metric &metric, PartitionWorkspace<Me
 {
     if (int(ws.nodes.size()) == mesh.FaceCount()) return;
     ws.nodes.resize(mesh.FaceCount());
-    for (int f = 0; f < mesh.FaceCount(); ++f) {
-        ws.nodes[f].region = 0;
-        ws.nodes[f].neighbors = mesh.neighbors[f];
-        ws.nodes[f].data = metric.Data(f);
-    }
+    ForEachChunk(size_t(mesh.FaceCount()), [&](int, size_t begin, size_t end) {
+        for (size_t f = begin; f < end; ++f) {
+            ws.nodes[f].region = 0;
+            ws.nodes[f].neighbors = mesh.neighbors[f];
+            ws.nodes[f].data = metric.Data(int(f));
+        }
+    });
 }
 
 /// The flood proper, on nodes already marked: free ones with region -1 and no queued error.
@@ -225,6 +228,15 @@ void Flood(const Metric &metric, const std::vector<Proxy> &proxies, const std::v
     }
 }
 
+/// For SumByKey over the faces: a face's region when `only` flags it (or is empty), else -1.
+inline auto FlaggedRegionOf(const std::vector<int> &faceRegion, const std::vector<char> &only)
+{
+    return [&faceRegion, &only](size_t f) {
+        const int r = faceRegion[f];
+        return only.empty() || only[r] ? r : -1;
+    };
+}
+
 /// Copies a flooded face's label out; a face no seed reached keeps -1 there and becomes a wall.
 template <class Node>
 bool TakeLabel(Node &node, int &label)
@@ -252,17 +264,24 @@ int FloodRegions(const Graph &mesh, const Metric &metric, const std::vector<Prox
                  const std::vector<int> &seeds, std::vector<int> &faceRegion, PartitionWorkspace<Metric, Neighbors> &ws)
 {
     detail::PrepareNodes(mesh, metric, ws);
-    for (int f = 0; f < mesh.FaceCount(); ++f) {
-        ws.nodes[f].queuedRank = FloodQueue::kNoRank;
-        ws.nodes[f].region = faceRegion[f];
-    }
+    // The flood itself is one priority queue, sequential; marking and reading out run in parallel.
+    ForEachChunk(size_t(mesh.FaceCount()), [&](int, size_t begin, size_t end) {
+        for (size_t f = begin; f < end; ++f) {
+            ws.nodes[f].queuedRank = FloodQueue::kNoRank;
+            ws.nodes[f].region = faceRegion[f];
+        }
+    });
     std::vector<std::pair<int, int>> regionSeeds;
     for (int r = 0; r < int(seeds.size()); ++r)
         if (seeds[r] >= 0) regionSeeds.emplace_back(r, seeds[r]);
     detail::Flood(metric, proxies, regionSeeds, ws);
-    int unreached = 0;
-    for (int f = 0; f < mesh.FaceCount(); ++f) unreached += !detail::TakeLabel(ws.nodes[f], faceRegion[f]);
-    return unreached;
+    std::vector<int> unreached(ChunkCount(size_t(mesh.FaceCount())), 0);
+    ForEachChunk(size_t(mesh.FaceCount()), [&](int chunk, size_t begin, size_t end) {
+        int n = 0;  // counted here, stored once: neighbouring chunks' counts share a cache line
+        for (size_t f = begin; f < end; ++f) n += !detail::TakeLabel(ws.nodes[f], faceRegion[f]);
+        unreached[chunk] = n;
+    });
+    return std::accumulate(unreached.begin(), unreached.end(), 0);
 }
 
 /// The same flood confined to `faces`: only they are relabelled, from the (region, seed face)
@@ -287,34 +306,48 @@ int FloodWithin(const Graph &mesh, const Metric &metric, const std::vector<Proxy
 
 /// Measures the regions flagged in `only` (every region when it is empty): each face's error to
 /// its region's proxy, the regions' energies, and their seeds (smallest error, lowest index).
+/// In parallel over chunks of faces; the energies are summed chunk by chunk (SumByKey).
 template <class Metric>
 void MeasureRegions(const Metric &metric, RegionState &s, const std::vector<char> &only = {})
 {
-    const int regionCount = s.RegionCount();
+    struct Measure
+    {
+        double energy = 0;
+        double seedError = std::numeric_limits<double>::infinity();
+        int seed = -1;
+    };
     const auto &faceRegion = s.partition.faceRegion;
     const auto &proxies = s.partition.proxies;
-    std::vector<double> seedError(regionCount, std::numeric_limits<double>::infinity());
-    for (int r = 0; r < regionCount; ++r)
+    std::vector<Measure> measures(s.RegionCount());
+    SumByKey(
+        faceRegion.size(), measures, detail::FlaggedRegionOf(faceRegion, only),
+        [&](Measure &m, size_t f) {
+            const double e = metric.Error(int(f), proxies[faceRegion[f]]);
+            s.faceError[f] = e;
+            m.energy += e;
+            if (e < m.seedError) {
+                m.seedError = e;
+                m.seed = int(f);
+            }
+        },
+        [](Measure &m, const Measure &later) {  // `later`'s faces all come after m's
+            m.energy += later.energy;
+            if (later.seedError < m.seedError) {
+                m.seedError = later.seedError;
+                m.seed = later.seed;
+            }
+        });
+    for (int r = 0; r < s.RegionCount(); ++r)
         if (only.empty() || only[r]) {
-            s.regionEnergy[r] = 0;
-            s.seeds[r] = -1;
+            s.regionEnergy[r] = measures[r].energy;
+            s.seeds[r] = measures[r].seed;
         }
-    for (int f = 0; f < int(faceRegion.size()); ++f) {
-        const int r = faceRegion[f];
-        if (!only.empty() && !only[r]) continue;
-        const double e = metric.Error(f, proxies[r]);
-        s.faceError[f] = e;
-        s.regionEnergy[r] += e;
-        if (e < seedError[r]) {
-            seedError[r] = e;
-            s.seeds[r] = f;
-        }
-    }
 }
 
 /// Refits the proxies of the regions flagged in `only` (all when empty) to their faces in one
-/// pass over the faces, then measures them. A region whose faces admit no fit (zero area, or
-/// L2,1 normals that cancel out) keeps its previous proxy's normal.
+/// parallel pass over the faces (moments summed chunk by chunk, SumByKey), then measures them.
+/// A region whose faces admit no fit (zero area, or L2,1 normals that cancel out) keeps its
+/// previous proxy's normal.
 template <class Metric>
 void FitRegions(const Metric &metric, RegionState &s, const std::vector<char> &only = {})
 {
@@ -324,10 +357,7 @@ void FitRegions(const Metric &metric, RegionState &s, const std::vector<char> &o
     moments.reserve(regionCount);
     for (int r = 0; r < regionCount; ++r) moments.push_back(metric.EmptyMoments(proxies[r].point));
     const auto &faceRegion = s.partition.faceRegion;
-    for (int f = 0; f < int(faceRegion.size()); ++f) {
-        const int r = faceRegion[f];
-        if (only.empty() || only[r]) metric.Add(moments[r], f);
-    }
+    SumMoments(metric, detail::FlaggedRegionOf(faceRegion, only), faceRegion.size(), moments);
     for (int r = 0; r < regionCount; ++r)
         if (only.empty() || only[r]) proxies[r] = metric.Fit(moments[r], proxies[r]);
     MeasureRegions(metric, s, only);

@@ -7,6 +7,7 @@
 
 #include <vsa/face_geometry.h>
 #include <vsa/indexed_mesh.h>
+#include <vsa/metrics.h>
 #include <vsa/proxy.h>
 
 #include <algorithm>
@@ -72,10 +73,8 @@ PatchGraph<Metric> BuildPatchGraph(const IndexedMesh &mesh, const Metric &metric
     const std::vector<int> &patchOf = graph.patchOf;
     graph.component.resize(patchCount);
     graph.componentCount = mesh.componentCount;
-    for (int f = 0; f < mesh.FaceCount(); ++f) {
-        metric.Add(graph.moments[patchOf[f]], f);
-        graph.component[patchOf[f]] = mesh.component[f];
-    }
+    SumMoments(metric, [&](size_t f) { return patchOf[f]; }, patchOf.size(), graph.moments);
+    for (int f = 0; f < mesh.FaceCount(); ++f) graph.component[patchOf[f]] = mesh.component[f];
 
     // Every edge between two patches, bucketed by patch, then each bucket sorted and deduplicated.
     std::vector<int> &offset = graph.neighbors.offset, &list = graph.neighbors.list;

@@ -1,0 +1,177 @@
+// The number of threads changes nothing: the partition, its energies and the output mesh are the
+// same bits on 1, 2, 3 and 8 threads (vsa/parallel.h). Meshes of several chunks of faces, so that
+// sums that followed the threads would round differently.
+#include "partition_test_helpers.h"
+
+#include <vsa/approximate_shape.h>
+#include <vsa/parallel.h>
+
+#include <vcg/complex/algorithms/create/platonic.h>
+
+#include <gtest/gtest.h>
+
+#include <cstring>
+#include <string>
+#include <vector>
+
+#ifdef _OPENMP
+#include <omp.h>
+#endif
+
+namespace {
+
+using namespace vcg::tri::vsa;
+using vsa_test::TMesh;
+
+const int kThreadCounts[] = {1, 2, 3, 8};
+
+/// Runs `f` with at most `threads` threads, then restores the default.
+template <class F>
+auto WithThreads(int threads, F &&f)
+{
+#ifdef _OPENMP
+    const int before = omp_get_max_threads();
+    omp_set_num_threads(threads);
+    auto result = f();
+    omp_set_num_threads(before);
+    return result;
+#else
+    (void)threads;
+    return f();
+#endif
+}
+
+/// The bytes of a vector of plain values: equal bytes, equal doubles bit for bit (even NaNs).
+template <class T>
+std::string Bytes(const std::vector<T> &v)
+{
+    std::string bytes(v.size() * sizeof(T), '\0');
+    if (!v.empty()) std::memcpy(&bytes[0], v.data(), bytes.size());
+    return bytes;
+}
+
+std::string Bytes(double x) { return Bytes(std::vector<double>{x}); }
+
+/// Everything the partitioning produced, as bytes.
+std::string Fingerprint(const ApproximationResult &r)
+{
+    return Bytes(r.partition.faceRegion) + Bytes(r.partition.proxies) + Bytes(r.regionEnergy) + Bytes(r.energy) +
+           Bytes(r.energyPerIteration) + Bytes(r.referenceEnergy) + std::to_string(r.iterations);
+}
+
+/// The output mesh's coordinates and triangles, as bytes.
+std::string Fingerprint(const TMesh &m)
+{
+    std::vector<vcg::Point3f> coords;
+    std::vector<int> triangles;
+    for (const auto &v : m.vert)
+        if (!v.IsD()) coords.push_back(v.cP());
+    for (const auto &f : m.face)
+        if (!f.IsD())
+            for (int k = 0; k < 3; ++k) triangles.push_back(int(vcg::tri::Index(m, f.cV(k))));
+    return Bytes(coords) + Bytes(triangles);
+}
+
+/// Fills `m` with "sphere" (an icosphere of 20480 faces) or one of CGAL's sample meshes.
+/// (vcg meshes do not copy: TriMesh's copy constructor leaves the copy empty.)
+void Load(const std::string &name, TMesh &m)
+{
+    if (name == "sphere") {
+        vcg::tri::Sphere(m, 5);
+        vcg::tri::UpdateBounding<TMesh>::Box(m);
+        return;
+    }
+    std::string error;
+    if (!vsa_test::LoadMesh(m, vsa_test::CgalMesh(name), &error)) ADD_FAILURE() << name << ": " << error;
+}
+
+IndexedMesh Indexed(const std::string &name)
+{
+    TMesh m;
+    Load(name, m);
+    return BuildIndexedMesh(m);
+}
+
+}  // namespace
+
+TEST(ThreadCount, ParallelPassesSplitIntoSeveralChunks)
+{
+    // The meshes below must span several chunks, or the tests could not tell orders apart.
+    EXPECT_GE(ChunkCount(Indexed("sphere").FaceCount()), 5);
+    EXPECT_GE(ChunkCount(Indexed("fandisk.off").FaceCount()), 3);
+}
+
+TEST(ThreadCount, PartitionIsTheSameBitsOnAnyNumberOfThreads)
+{
+    struct Case
+    {
+        const char *mesh;
+        int k;
+        MetricKind metric;
+        SeedingMethod init;
+    };
+    for (const Case &c : {Case{"sphere", 50, MetricKind::L2, SeedingMethod::Hierarchical},
+                          Case{"fandisk.off", 40, MetricKind::L21, SeedingMethod::Farthest},
+                          Case{"armadillo.off", 100, MetricKind::L21, SeedingMethod::Random}}) {
+        ApproximationParam param;
+        param.proxyCount = c.k;
+        param.metric = c.metric;
+        param.init = c.init;
+        param.randomSeed = 3;
+        param.maxIterations = 15;
+        const IndexedMesh im = Indexed(c.mesh);
+        std::string reference;
+        for (int threads : kThreadCounts) {
+            const ApproximationResult r = WithThreads(threads, [&] { return Approximate(im, param); });
+            ASSERT_TRUE(r.ok) << r.error;
+            if (reference.empty()) reference = Fingerprint(r);
+            EXPECT_TRUE(Fingerprint(r) == reference) << c.mesh << ", " << threads << " threads";
+        }
+    }
+}
+
+TEST(ThreadCount, MultilevelSeedingIsTheSameBitsOnAnyNumberOfThreads)
+{
+    const IndexedMesh im = Indexed("armadillo.off");
+    const FaceGeometry g = ComputeFaceGeometry(im, true);
+    const L2Metric metric(g);
+    SeedingGoal goal;
+    goal.proxyCount = 100;
+    goal.relaxations = 2;
+    goal.multilevelFaces = 0;  // on patches, whatever the size
+    ASSERT_GT(detail::PatchFaces(im.FaceCount(), goal), 1);
+    std::string reference;
+    for (int threads : kThreadCounts) {
+        const RegionState s = WithThreads(threads, [&] {
+            RegionState state;
+            PartitionWorkspace<L2Metric> ws;
+            SeedRandom random(7);
+            SeedHierarchically(im, metric, g, state, goal, random, ws);
+            return state;
+        });
+        const std::string fingerprint = Bytes(s.partition.faceRegion) + Bytes(s.partition.proxies) +
+                                        Bytes(s.seeds) + Bytes(s.faceError) + Bytes(s.regionEnergy);
+        if (reference.empty()) reference = fingerprint;
+        EXPECT_TRUE(fingerprint == reference) << threads << " threads";
+    }
+}
+
+TEST(ThreadCount, ApproximateShapeIsTheSameBitsOnAnyNumberOfThreads)
+{
+    for (const char *name : {"sphere", "fandisk.off"}) {
+        TMesh in;
+        Load(name, in);
+        ShapeApproximationParam param;
+        param.partition.proxyCount = 60;
+        param.partition.randomSeed = 1;
+        std::string reference;
+        for (int threads : kThreadCounts) {
+            TMesh out;
+            const ShapeApproximationResult r = WithThreads(threads, [&] { return ApproximateShape(in, out, param); });
+            ASSERT_TRUE(r.ok) << r.error;
+            const std::string fingerprint = Fingerprint(r.partition) + Fingerprint(out) + Bytes(r.inputFaceRegion);
+            if (reference.empty()) reference = fingerprint;
+            EXPECT_TRUE(fingerprint == reference) << name << ", " << threads << " threads";
+        }
+    }
+}
