@@ -11,6 +11,7 @@
 #include "output_quality.h"
 
 #include <vsa/approximation.h>
+#include <vsa/meshable_partition.h>
 #include <vsa/meshing.h>
 
 #include <vcg/complex/complex.h>
@@ -35,6 +36,7 @@ struct Options
     std::string mesh, out, metric = "l21", init = "hierarchical";
     vcg::tri::vsa::ApproximationParam param;
     vcg::tri::vsa::MeshingParam meshing;
+    vcg::tri::vsa::MeshablePartitionParam meshable;
 };
 
 /// "0" or "1" as a bool; anything else throws, which Parse reports as a bad value.
@@ -69,6 +71,11 @@ std::string Parse(int argc, char **argv, Options &o)
             else if (arg == "--repair-rounds") o.meshing.repairRounds = std::stoi(value);
             else if (arg == "--halving-rounds") o.meshing.halvingRounds = std::stoi(value);
             else if (arg == "--project-anchors") o.meshing.projectAnchors = ParseFlag(value);
+            else if (arg == "--meshable") o.meshable.enabled = ParseFlag(value);
+            else if (arg == "--max-proxy-factor") o.meshable.maxProxyFactor = std::stod(value);
+            else if (arg == "--meshable-rounds") o.meshable.maxRounds = std::stoi(value);
+            else if (arg == "--meshable-lloyd") o.meshable.lloydIterations = std::stoi(value);
+            else if (arg == "--stray-factor") o.meshable.strayFactor = std::stod(value);
             else if (arg == "--metric") o.metric = value;
             else if (arg == "--init") o.init = value;
             else return "unknown option " + arg;
@@ -136,8 +143,10 @@ int main(int argc, char **argv)
         const int iterations = approximation.Run(o.param.maxIterations);
         const double tIterations = clock.Seconds();
         const int faces = approximation.Mesh().FaceCount();
-        const ApproximationResult partition = approximation.Result();
         clock.Restart();
+        const MeshablePartitionReport meshable =
+            MakePartitionMeshable<BMesh::CoordType>(approximation, o.meshing, o.meshable);
+        const ApproximationResult partition = approximation.Result();
         BMesh output;
         const MeshingReport meshing =
             BuildApproximatingMesh(approximation.Mesh(), partition.partition, o.meshing, output);
@@ -173,7 +182,8 @@ int main(int argc, char **argv)
             .Add("cells_halved", meshing.cellsHalved)
             .Add("carving_rounds", meshing.carvingRounds)
             .Add("pieces_carved", meshing.piecesCarved)
-            .Add("close_pairs", meshing.closePairs);
+            .Add("close_pairs", meshing.closePairs)
+            .Add("regions_final", meshable.proxiesFinal);
         vsa_bench::AddOutputQualityKeys(json, m, output);
         if (!o.out.empty() && !WriteApproximation(output, meshing.faceRegion, partition.proxyCount, o.out)) {
             json.Add("error", "cannot write " + o.out).Print();
