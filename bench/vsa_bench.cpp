@@ -10,6 +10,7 @@
 #include "off_file.h"
 #include "output_quality.h"
 
+#include <vsa/approximate_shape.h>
 #include <vsa/approximation.h>
 #include <vsa/meshable_partition.h>
 #include <vsa/meshing.h>
@@ -134,7 +135,9 @@ int main(int argc, char **argv)
 
     try {
         vsa_bench::Stopwatch clock;
-        Approximation approximation(m, o.param);
+        IndexedMesh snapshot = BuildIndexedMesh(m);
+        const int collapsed = CollapseCoincidentEdgesIfMeshable(snapshot);  // as ApproximateShape does
+        Approximation approximation(std::move(snapshot), o.param);
         const double tSetup = clock.Seconds();
         clock.Restart();
         approximation.Initialize();
@@ -183,7 +186,8 @@ int main(int argc, char **argv)
             .Add("carving_rounds", meshing.carvingRounds)
             .Add("pieces_carved", meshing.piecesCarved)
             .Add("close_pairs", meshing.closePairs)
-            .Add("regions_final", meshable.proxiesFinal);
+            .Add("regions_final", meshable.proxiesFinal)
+            .Add("collapsed_edges", collapsed);
         vsa_bench::AddOutputQualityKeys(json, m, output);
         if (!o.out.empty() && !WriteApproximation(output, meshing.faceRegion, partition.proxyCount, o.out)) {
             json.Add("error", "cannot write " + o.out).Print();

@@ -8,6 +8,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <random>
 #include <string>
 #include <vector>
@@ -141,6 +142,41 @@ TEST(MeshablePartition, NearestFaceMatchesBruteForce)
         ASSERT_GE(nearest, 0);
         EXPECT_EQ(distance(nearest), best) << "query " << q;
     }
+}
+
+/// Two distinct vertices at one position, joined by an edge with two faces without area on it
+/// (as CAD exports have them): each became an anchor, and output triangles on both had no area.
+/// The edge is collapsed first: the output has no degenerate face; those faces get the region of
+/// a face on one of their vertices.
+TEST(MeshablePartition, CoincidentVerticesGiveNoDegenerateFace)
+{
+    TMesh cube, out;
+    vsa_test::MakeTessellatedCube(cube, 3);
+    const int faces = cube.FN();
+    for (int corner = 0; corner < 8; ++corner) {  // at every corner of the cube, a zero-length edge
+        const vcg::Point3f at(corner & 1 ? 1 : -1, corner & 2 ? 1 : -1, corner & 4 ? 1 : -1);
+        int fi = 0, i = 0;
+        while (fi < faces && cube.face[fi].cP(i) != at)
+            if (++i == 3) i = 0, ++fi;
+        ASSERT_LT(fi, faces);
+        const vcg::Point3f position = cube.face[fi].cP(i);
+        auto copy = vcg::tri::Allocator<TMesh>::AddVertex(cube, position);
+        // After AddVertex, which may move the vertices.
+        auto u = cube.face[fi].V(i), v = cube.face[fi].V((i + 1) % 3), w = cube.face[fi].V((i + 2) % 3);
+        cube.face[fi].V(i) = &*copy;
+        vcg::tri::Allocator<TMesh>::AddFace(cube, &*copy, u, v);
+        vcg::tri::Allocator<TMesh>::AddFace(cube, w, u, &*copy);
+    }
+    const ShapeApproximationResult r = Approximate(cube, out, 6);
+    ASSERT_TRUE(r.ok) << r.error;
+    EXPECT_EQ(r.input.degenerateFaces, 16);
+    EXPECT_EQ(r.meshing.validity.degenerateFaces, 0);
+    EXPECT_TRUE(r.meshing.validity.IsValid()) << r.meshing.validity.Summary();
+    EXPECT_EQ(out.FN(), 12);
+    EXPECT_EQ(std::count(r.inputFaceRegion.begin(), r.inputFaceRegion.end(), -1), 0);
+    bool logged = false;
+    for (const std::string &m : r.partition.messages) logged |= m.find("8 edges between distinct vertices") == 0;
+    EXPECT_TRUE(logged);
 }
 
 }  // namespace

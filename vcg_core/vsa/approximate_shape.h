@@ -115,6 +115,36 @@ inline bool IsTriangleSoup(const IndexedMesh &m)
     return true;
 }
 
+/// Collapses the edges of `snapshot` between distinct vertices at one position (see
+/// CollapseCoincidentEdges), unless that leaves a mesh the meshing refuses (collapsing can
+/// pinch the surface). Returns the number of vertices merged away.
+inline int CollapseCoincidentEdgesIfMeshable(IndexedMesh &snapshot)
+{
+    int collapsed = 0;
+    MeshDiagnostics diag;
+    IndexedMesh welded = CollapseCoincidentEdges(snapshot, collapsed, &diag);
+    if (collapsed == 0 || !MeshingRefusal(welded, diag).empty()) return 0;
+    snapshot = std::move(welded);
+    return collapsed;
+}
+
+/// Per face of `in`'s container, its region: that of its face in `mesh` (the snapshot), or for a
+/// live face the snapshot left out (collapsed, see CollapseCoincidentEdges) that of a snapshot
+/// face on one of its vertices; -1 for deleted faces.
+template <class MeshType>
+std::vector<int> InputFaceRegions(const MeshType &in, const IndexedMesh &mesh, const std::vector<int> &faceRegion)
+{
+    std::vector<int> region(in.face.size(), -1), vertexRegion(in.vert.size(), -1);
+    for (int f = 0; f < mesh.FaceCount(); ++f) {
+        region[mesh.sourceFace[f]] = faceRegion[f];
+        for (int v : mesh.faces[f]) vertexRegion[mesh.sourceVertex[v]] = faceRegion[f];
+    }
+    for (size_t f = 0; f < in.face.size(); ++f)
+        for (int i = 0; i < 3 && region[f] < 0 && !in.face[f].IsD(); ++i)
+            region[f] = vertexRegion[size_t(in.face[f].cV(i) - &in.vert[0])];
+    return region;
+}
+
 /// Approximates `in` by a mesh of a few planar pieces, written to `out` (cleared first).
 /// Never throws and never changes `in`: on bad input or parameters, ok == false and `error`
 /// says why in words meant for the user.
@@ -165,6 +195,7 @@ ShapeApproximationResult ApproximateShape(const InMeshType &in, OutMeshType &out
                            "first (MeshLab: Cleaning and Repairing > Merge Close Vertices).";
             return result;
         }
+        const int collapsed = CollapseCoincidentEdgesIfMeshable(snapshot);
 
         auto start = std::chrono::steady_clock::now();
         Approximation approximation(std::move(snapshot), param.partition);
@@ -185,6 +216,10 @@ ShapeApproximationResult ApproximateShape(const InMeshType &in, OutMeshType &out
         if (result.meshable.proxiesFinal > result.meshable.proxiesRequested)
             detail::KeepBetterOfAsked(mesh, asked, param.meshing, result, out);
         result.secondsMeshing = detail::SecondsSince(start);
+        if (collapsed > 0)
+            result.partition.messages.push_back(std::to_string(collapsed) +
+                                                " edges between distinct vertices at one position collapsed (their "
+                                                "faces have no area)");
         const std::string meshable = result.meshable.Summary();
         if (!meshable.empty()) result.partition.messages.push_back(meshable);
         detail::ProgressSlice::Enter(nullptr, 0, 100);
@@ -193,9 +228,7 @@ ShapeApproximationResult ApproximateShape(const InMeshType &in, OutMeshType &out
             return result;
         }
 
-        result.inputFaceRegion.assign(in.face.size(), -1);
-        for (int f = 0; f < mesh.FaceCount(); ++f)
-            result.inputFaceRegion[mesh.sourceFace[f]] = result.partition.partition.faceRegion[f];
+        result.inputFaceRegion = InputFaceRegions(in, mesh, result.partition.partition.faceRegion);
         result.ok = true;
     } catch (const std::bad_alloc &) {
         result.error = "Out of memory.";
