@@ -11,7 +11,9 @@
 #include "off_file.h"
 #include "output_quality.h"
 
+#include <vsa/approximate_shape.h>
 #include <vsa/approximation.h>
+#include <vsa/meshable_partition.h>
 #include <vsa/meshing.h>
 #include <vsa/parallel.h>
 
@@ -38,6 +40,7 @@ struct Options
     std::string mesh, out, polygonLabels, metric = "l21", init = "hierarchical";
     vcg::tri::vsa::ApproximationParam param;
     vcg::tri::vsa::MeshingParam meshing;
+    vcg::tri::vsa::MeshablePartitionParam meshable;
 };
 
 /// "0" or "1" as a bool; anything else throws, which Parse reports as a bad value.
@@ -74,6 +77,11 @@ std::string Parse(int argc, char **argv, Options &o)
             else if (arg == "--project-anchors") o.meshing.projectAnchors = ParseFlag(value);
             else if (arg == "--polygonal") o.meshing.polygonal = ParseFlag(value);
             else if (arg == "--polygon-labels") o.polygonLabels = value;
+            else if (arg == "--meshable") o.meshable.enabled = ParseFlag(value);
+            else if (arg == "--max-proxy-factor") o.meshable.maxProxyFactor = std::stod(value);
+            else if (arg == "--meshable-rounds") o.meshable.maxRounds = std::stoi(value);
+            else if (arg == "--meshable-lloyd") o.meshable.lloydIterations = std::stoi(value);
+            else if (arg == "--stray-factor") o.meshable.strayFactor = std::stod(value);
             else if (arg == "--metric") o.metric = value;
             else if (arg == "--init") o.init = value;
             else return "unknown option " + arg;
@@ -133,7 +141,9 @@ int main(int argc, char **argv)
 
     try {
         vsa_bench::Stopwatch clock;
-        Approximation approximation(m, o.param);
+        IndexedMesh snapshot = BuildIndexedMesh(m);
+        const int collapsed = CollapseCoincidentEdgesIfMeshable(snapshot);  // as ApproximateShape does
+        Approximation approximation(std::move(snapshot), o.param);
         const double tSetup = clock.Seconds();
         clock.Restart();
         approximation.Initialize();
@@ -142,9 +152,11 @@ int main(int argc, char **argv)
         const int iterations = approximation.Run(o.param.maxIterations);
         const double tIterations = clock.Seconds();
         const int faces = approximation.Mesh().FaceCount();
-        const ApproximationResult partition = approximation.Result();
         const double peakRssPartitionMb = vsa_bench::PeakRssMb();
         clock.Restart();
+        const MeshablePartitionReport meshable =
+            MakePartitionMeshable<BMesh::CoordType>(approximation, o.meshing, o.meshable);
+        const ApproximationResult partition = approximation.Result();
         BMesh output;
         const MeshingReport meshing =
             BuildApproximatingMesh(approximation.Mesh(), partition.partition, o.meshing, output);
@@ -183,7 +195,9 @@ int main(int argc, char **argv)
             .Add("cells_halved", meshing.cellsHalved)
             .Add("carving_rounds", meshing.carvingRounds)
             .Add("pieces_carved", meshing.piecesCarved)
-            .Add("close_pairs", meshing.closePairs);
+            .Add("close_pairs", meshing.closePairs)
+            .Add("regions_final", meshable.proxiesFinal)
+            .Add("collapsed_edges", collapsed);
         const int regionsOut = int(std::set<int>(meshing.faceRegion.begin(), meshing.faceRegion.end()).size());
         const vsa_bench::PolygonLabels polygons = vsa_bench::AddOutputQualityKeys(json, m, output, regionsOut);
         if (!o.out.empty() && !WriteApproximation(output, meshing.faceRegion, partition.proxyCount, o.out)) {

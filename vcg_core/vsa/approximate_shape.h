@@ -5,7 +5,10 @@
 #define VSA_APPROXIMATE_SHAPE_H
 
 #include <vsa/approximation.h>
+#include <vsa/meshable_partition.h>
 #include <vsa/meshing.h>
+
+#include <vcg/complex/append.h>
 
 #include <algorithm>
 #include <chrono>
@@ -14,6 +17,7 @@
 #include <limits>
 #include <sstream>
 #include <string>
+#include <tuple>
 #include <vector>
 
 namespace vcg {
@@ -23,6 +27,7 @@ namespace vsa {
 struct ShapeApproximationParam
 {
     ApproximationParam partition;
+    MeshablePartitionParam meshable;
     MeshingParam meshing;
 };
 
@@ -31,7 +36,8 @@ struct ShapeApproximationResult
     bool ok = false;
     std::string error;                ///< why nothing was produced, when !ok
     MeshDiagnostics input;            ///< what the input looked like
-    ApproximationResult partition;    ///< regions, proxies, energies, iterations
+    ApproximationResult partition;    ///< regions, proxies, energies, iterations (after MakePartitionMeshable)
+    MeshablePartitionReport meshable; ///< k' and why the regions were split
     MeshingReport meshing;            ///< anchors, fallbacks, validity of the output
     std::vector<int> inputFaceRegion; ///< per face of the input's container; -1 for deleted faces
     double secondsSeeding = 0, secondsIterations = 0, secondsMeshing = 0;
@@ -95,7 +101,74 @@ inline double SecondsSince(std::chrono::steady_clock::time_point start)
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
+/// Orders meshings: built before failed, valid before invalid, then fewer intersecting pairs.
+inline std::tuple<bool, bool, int> MeshingRank(const MeshingReport &m)
+{
+    return {!m.ok, !m.validity.IsValid(), m.validity.selfIntersections};
+}
+
+/// When the split partition's output (in `result` and `out`) is not valid, meshes the partition
+/// as asked (`asked`, k regions) too and keeps that if it does better: splitting must never cost
+/// validity (a 6-face prism at 1e37 split into single faces met itself once rounded to float).
+template <class OutMeshType>
+void KeepBetterOfAsked(const IndexedMesh &mesh, const ApproximationResult &asked, const MeshingParam &param,
+                       ShapeApproximationResult &result, OutMeshType &out)
+{
+    if (result.meshing.ok && result.meshing.validity.IsValid()) return;
+    OutMeshType other;
+    MeshingReport report = BuildApproximatingMesh(mesh, asked.partition, param, other);
+    if (!(MeshingRank(report) < MeshingRank(result.meshing))) return;
+    result.meshing = std::move(report);
+    result.partition = asked;
+    result.meshable.regionsLeft = 0;
+    result.meshable.keptAsked = true;
+    out.Clear();
+    Append<OutMeshType, OutMeshType>::MeshCopy(out, other);
+}
+
 }  // namespace detail
+
+/// Whether no two faces of a mesh of several faces share a vertex: an unwelded STL, whose only
+/// approximation would be itself.
+inline bool IsTriangleSoup(const IndexedMesh &m)
+{
+    if (m.FaceCount() < 2) return false;
+    std::vector<char> used(m.positions.size(), 0);
+    for (const auto &t : m.faces)
+        for (int v : t)
+            if (used[v]++) return false;
+    return true;
+}
+
+/// Collapses the edges of `snapshot` between distinct vertices at one position (see
+/// CollapseCoincidentEdges), unless that leaves a mesh the meshing refuses (collapsing can
+/// pinch the surface). Returns the number of vertices merged away.
+inline int CollapseCoincidentEdgesIfMeshable(IndexedMesh &snapshot)
+{
+    int collapsed = 0;
+    MeshDiagnostics diag;
+    IndexedMesh welded = CollapseCoincidentEdges(snapshot, collapsed, &diag);
+    if (collapsed == 0 || !MeshingRefusal(welded, diag).empty()) return 0;
+    snapshot = std::move(welded);
+    return collapsed;
+}
+
+/// Per face of `in`'s container, its region: that of its face in `mesh` (the snapshot), or for a
+/// live face the snapshot left out (collapsed, see CollapseCoincidentEdges) that of a snapshot
+/// face on one of its vertices; -1 for deleted faces.
+template <class MeshType>
+std::vector<int> InputFaceRegions(const MeshType &in, const IndexedMesh &mesh, const std::vector<int> &faceRegion)
+{
+    std::vector<int> region(in.face.size(), -1), vertexRegion(in.vert.size(), -1);
+    for (int f = 0; f < mesh.FaceCount(); ++f) {
+        region[mesh.sourceFace[f]] = faceRegion[f];
+        for (int v : mesh.faces[f]) vertexRegion[mesh.sourceVertex[v]] = faceRegion[f];
+    }
+    for (size_t f = 0; f < in.face.size(); ++f)
+        for (int i = 0; i < 3 && region[f] < 0 && !in.face[f].IsD(); ++i)
+            region[f] = vertexRegion[size_t(in.face[f].cV(i) - &in.vert[0])];
+    return region;
+}
 
 /// Approximates `in` by a mesh of a few planar pieces, written to `out` (cleared first).
 /// Never throws and never changes `in`: on bad input or parameters, ok == false and `error`
@@ -136,6 +209,12 @@ ShapeApproximationResult ApproximateShape(const InMeshType &in, OutMeshType &out
             result.error = "The mesh cannot be approximated: " + refusal;
             return result;
         }
+        if (IsTriangleSoup(snapshot)) {
+            result.error = "Every face of the mesh is a separate piece (no two faces share a vertex): weld it "
+                           "first (MeshLab: Cleaning and Repairing > Merge Close Vertices).";
+            return result;
+        }
+        const int collapsed = CollapseCoincidentEdgesIfMeshable(snapshot);
 
         auto start = std::chrono::steady_clock::now();
         Approximation approximation(std::move(snapshot), param.partition);
@@ -143,23 +222,32 @@ ShapeApproximationResult ApproximateShape(const InMeshType &in, OutMeshType &out
         approximation.Initialize(detail::ProgressSlice::Enter(cb, 0, 40));
         result.secondsSeeding = detail::SecondsSince(start);
         start = std::chrono::steady_clock::now();
-        approximation.Run(param.partition.maxIterations, detail::ProgressSlice::Enter(cb, 40, 80));
+        approximation.Run(param.partition.maxIterations, detail::ProgressSlice::Enter(cb, 40, 70));
+        const ApproximationResult asked = approximation.Result();
+        result.meshable = MakePartitionMeshable<typename OutMeshType::CoordType>(
+            approximation, param.meshing, param.meshable, detail::ProgressSlice::Enter(cb, 70, 80));
         result.secondsIterations = detail::SecondsSince(start);
         result.partition = approximation.Result();
 
         start = std::chrono::steady_clock::now();
         result.meshing = BuildApproximatingMesh(mesh, result.partition.partition, param.meshing, out,
                                                 detail::ProgressSlice::Enter(cb, 80, 100));
+        if (result.meshable.proxiesFinal > result.meshable.proxiesRequested)
+            detail::KeepBetterOfAsked(mesh, asked, param.meshing, result, out);
         result.secondsMeshing = detail::SecondsSince(start);
+        if (collapsed > 0)
+            result.partition.messages.push_back(std::to_string(collapsed) +
+                                                " edges between distinct vertices at one position collapsed (their "
+                                                "faces have no area)");
+        const std::string meshable = result.meshable.Summary();
+        if (!meshable.empty()) result.partition.messages.push_back(meshable);
         detail::ProgressSlice::Enter(nullptr, 0, 100);
         if (!result.meshing.ok) {
             result.error = "Meshing the regions failed: " + result.meshing.error;
             return result;
         }
 
-        result.inputFaceRegion.assign(in.face.size(), -1);
-        for (int f = 0; f < mesh.FaceCount(); ++f)
-            result.inputFaceRegion[mesh.sourceFace[f]] = result.partition.partition.faceRegion[f];
+        result.inputFaceRegion = InputFaceRegions(in, mesh, result.partition.partition.faceRegion);
         result.ok = true;
     } catch (const std::bad_alloc &) {
         result.error = "Out of memory.";

@@ -277,16 +277,19 @@ public:
         return Energy() - before;
     }
 
-    /// Splits a region in two: a new proxy at its worst face, then Param::relaxations Lloyd
-    /// iterations confined to the region's faces. Returns the new region's index (the last).
-    int Split(int region)
+    /// Splits a region in two: a new proxy at `face` (by default, or when `face` is not a
+    /// non-seed face of the region, its worst face), then Param::relaxations Lloyd iterations
+    /// confined to the region's faces. Returns the new region's index (the last).
+    int Split(int region, int face = -1)
     {
         RequireInitialized("Split");
         RequireRegion(region);
         const auto &faceRegion = state_.partition.faceRegion;
         if (std::count(faceRegion.begin(), faceRegion.end(), region) < 2)
             throw std::invalid_argument("Region " + std::to_string(region) + " has a single face: cannot split it.");
-        WithMetric([&](const auto &metric, auto &ws) { SplitRegion(metric, ws, region); });
+        if (face < 0 || face >= mesh_.FaceCount() || faceRegion[face] != region || state_.IsSeed(face))
+            face = WorstFace(region);
+        WithMetric([&](const auto &metric, auto &ws) { SplitRegion(metric, ws, region, face); });
         StartTracking(false);
         return ProxyCount() - 1;
     }
@@ -492,13 +495,12 @@ private:
     }
 
     template <class Metric>
-    void SplitRegion(const Metric &metric, PartitionWorkspace<Metric> &ws, int region)
+    void SplitRegion(const Metric &metric, PartitionWorkspace<Metric> &ws, int region, int seed)
     {
         auto &faceRegion = state_.partition.faceRegion;
         std::vector<int> faces;
         for (int f = 0; f < mesh_.FaceCount(); ++f)
             if (faceRegion[f] == region) faces.push_back(f);
-        const int seed = WorstFace(region);
         const int added = ProxyCount();
         state_.partition.proxies.push_back(FitFace(metric, geometry_, seed));
         state_.seeds.push_back(seed);

@@ -255,6 +255,20 @@ inline std::vector<char> DegenerateFaceMask(const IndexedMesh &im)
     return degenerate;
 }
 
+/// Links the faces of `im` (neighbours, components) and fills in what `diag` learns from that
+/// and from the faces' areas.
+inline void LinkAndDiagnose(IndexedMesh &im, MeshDiagnostics &diag)
+{
+    const std::vector<char> degenerate = DegenerateFaceMask(im);
+    diag.degenerateFaces = int(std::count(degenerate.begin(), degenerate.end(), 1));
+    LinkFaces(im, diag);
+    diag.nonManifoldVertices = CountNonManifoldVertices(im);
+    LabelComponents(im);
+    diag.faces = im.FaceCount();
+    diag.vertices = im.VertexCount();
+    diag.components = im.componentCount;
+}
+
 }  // namespace detail
 
 /// Builds the flat snapshot of `m` and reports what is unusual about it. Deleted faces and
@@ -290,17 +304,50 @@ IndexedMesh BuildIndexedMesh(const MeshType &m, MeshDiagnostics *diagnostics = n
 
     diag.nonFiniteVertices = int(std::count_if(im.positions.begin(), im.positions.end(),
                                                [](const Point3d &p) { return !IsFinite(p); }));
-    const std::vector<char> degenerate = detail::DegenerateFaceMask(im);
-    diag.degenerateFaces = int(std::count(degenerate.begin(), degenerate.end(), 1));
-
-    detail::LinkFaces(im, diag);
-    diag.nonManifoldVertices = detail::CountNonManifoldVertices(im);
-    detail::LabelComponents(im);
-    diag.faces = im.FaceCount();
-    diag.vertices = im.VertexCount();
-    diag.components = im.componentCount;
+    detail::LinkAndDiagnose(im, diag);
     if (diagnostics) *diagnostics = diag;
     return im;
+}
+
+/// `im` with every edge between two distinct vertices at the same position collapsed, and the
+/// faces left without area by that (they repeat a vertex then) left out; `collapsed` gets the
+/// number of vertices merged away. Such edges (CAD exports, STL welded by index) would become
+/// two anchors at one point, and every output triangle on both would have no area.
+inline IndexedMesh CollapseCoincidentEdges(const IndexedMesh &im, int &collapsed, MeshDiagnostics *diagnostics = nullptr)
+{
+    std::vector<int> parent(im.VertexCount());
+    std::iota(parent.begin(), parent.end(), 0);
+    collapsed = 0;
+    for (const auto &t : im.faces)
+        for (int i = 0; i < 3; ++i) {
+            const int a = t[i], b = t[(i + 1) % 3];
+            if (a != b && im.positions[a] == im.positions[b] && detail::FindRoot(parent, a) != detail::FindRoot(parent, b)) {
+                detail::Unite(parent, a, b);
+                ++collapsed;
+            }
+        }
+    if (collapsed == 0) return im;
+    IndexedMesh out;
+    std::vector<int> newIndex(im.VertexCount(), -1);
+    for (int f = 0; f < im.FaceCount(); ++f) {
+        std::array<int, 3> t;
+        for (int i = 0; i < 3; ++i) t[i] = detail::FindRoot(parent, im.faces[f][i]);
+        if (RepeatsVertex(t)) continue;
+        for (int &v : t) {
+            if (newIndex[v] < 0) {
+                newIndex[v] = out.VertexCount();
+                out.positions.push_back(im.positions[v]);
+                out.sourceVertex.push_back(im.sourceVertex[v]);
+            }
+            v = newIndex[v];
+        }
+        out.faces.push_back(t);
+        out.sourceFace.push_back(im.sourceFace[f]);
+    }
+    MeshDiagnostics diag;
+    detail::LinkAndDiagnose(out, diag);
+    if (diagnostics) *diagnostics = diag;
+    return out;
 }
 
 }  // namespace vsa

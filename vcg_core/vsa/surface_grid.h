@@ -138,7 +138,54 @@ public:
         return false;
     }
 
+    /// The face nearest to p (as a filled triangle; ties: the first found), or -1 for an empty
+    /// grid. Shells of cells around p's own are visited until none can hold a nearer face.
+    int NearestFace(const Point3d &p) const
+    {
+        if (box_.IsNull()) return -1;
+        const Point3i center = CellOf(p);
+        const double step = std::min({cellSize_[0], cellSize_[1], cellSize_[2]});
+        const double outside = std::sqrt(std::max(0.0, SquaredDistanceOutside(p)));  // p to the grid's box
+        int shells = 0;
+        for (int i = 0; i < 3; ++i) shells = std::max({shells, center[i], dim_[i] - 1 - center[i]});
+        int nearest = -1;
+        double best = std::numeric_limits<double>::infinity();
+        for (int s = 0; s <= shells; ++s) {
+            // Every cell of shell s is at least (s - 1) cells away from p, and as far as the box.
+            if (nearest >= 0 && std::max(outside, (s - 1) * step) > best) break;
+            for (int z = std::max(0, center[2] - s); z <= std::min(dim_[2] - 1, center[2] + s); ++z)
+                for (int y = std::max(0, center[1] - s); y <= std::min(dim_[1] - 1, center[1] + s); ++y) {
+                    const bool wholeRow = std::abs(z - center[2]) == s || std::abs(y - center[1]) == s;
+                    for (int x = std::max(0, center[0] - s); x <= std::min(dim_[0] - 1, center[0] + s); ++x) {
+                        if (!wholeRow && std::abs(x - center[0]) != s) continue;
+                        const auto [first, last] = FacesIn(CellIndex(x, y, z));
+                        for (const int *face = first; face != last; ++face) {
+                            if (BoxSquaredDistance(faceBox_[*face], p) >= best * best) continue;  // the cheap test
+                            const std::array<int, 3> &t = faces_[*face];
+                            double distance;
+                            Point3d closest;
+                            TrianglePointDistance(Triangle3<double>(positions_[t[0]], positions_[t[1]], positions_[t[2]]),
+                                                  p, distance, closest);
+                            if (distance < best) best = distance, nearest = *face;
+                        }
+                    }
+                }
+        }
+        return nearest;
+    }
+
 private:
+    static double BoxSquaredDistance(const Box3d &box, const Point3d &p)
+    {
+        double d = 0;
+        for (int i = 0; i < 3; ++i) {
+            const double gap = std::max({box.min[i] - p[i], p[i] - box.max[i], 0.0});
+            d += gap * gap;
+        }
+        return d;
+    }
+    double SquaredDistanceOutside(const Point3d &p) const { return BoxSquaredDistance(box_, p); }
+
     /// The cells of face f's box that its plane crosses: a big slanted face crosses far fewer
     /// than its box holds. Once the grid is filled, `occupiedOnly` leaves out empty cells first,
     /// with no plane to test.

@@ -1,0 +1,182 @@
+// The meshable partition: regions that cannot be one clean planar polygon are split, k grows
+// to k' and the result says why; a cube keeps its six sides; an unwelded mesh is refused.
+#include "test_meshes.h"
+
+#include <vsa/approximate_shape.h>
+#include <vsa/meshable_partition.h>
+#include <vsa/surface_grid.h>
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <random>
+#include <string>
+#include <vector>
+
+namespace {
+
+using namespace vcg::tri::vsa;
+using vsa_test::TMesh;
+
+ShapeApproximationResult Approximate(const TMesh &in, TMesh &out, int k, bool meshable = true,
+                                     double maxProxyFactor = 2)
+{
+    ShapeApproximationParam param;
+    param.partition.proxyCount = k;
+    param.meshable.enabled = meshable;
+    param.meshable.maxProxyFactor = maxProxyFactor;
+    return ApproximateShape(in, out, param);
+}
+
+TEST(MeshablePartition, CubeKeepsItsSixSidesAndK)
+{
+    TMesh cube, out;
+    vsa_test::MakeTessellatedCube(cube, 4);
+    const ShapeApproximationResult r = Approximate(cube, out, 6);
+    ASSERT_TRUE(r.ok) << r.error;
+    EXPECT_EQ(r.meshable.proxiesRequested, 6);
+    EXPECT_EQ(r.meshable.proxiesFinal, 6);
+    EXPECT_EQ(r.meshable.rounds, 0);
+    EXPECT_EQ(r.meshable.Summary(), "");
+    EXPECT_EQ(r.partition.proxyCount, 6);
+    EXPECT_EQ(out.FN(), 12);
+    EXPECT_EQ(out.VN(), 8);
+}
+
+/// A box with a hole at k=4: two of its regions are rings (the top or the bottom with walls),
+/// which no single polygon can be. Given room (k' up to 16), they are split until every region
+/// is a disc (three rounds of two splits: k' = 10), the log says from which k to which and why,
+/// and the meshing has no region left to cut; with the stage off, k stays and the rings are cut.
+TEST(MeshablePartition, RingRegionsAreSplitAndKRaisedIsReported)
+{
+    TMesh box;
+    vsa_test::MakeBoxWithHole(box, 16);
+    TMesh kept;
+    const ShapeApproximationResult asked = Approximate(box, kept, 4, false);
+    ASSERT_TRUE(asked.ok) << asked.error;
+    EXPECT_EQ(asked.partition.proxyCount, 4);
+    EXPECT_GT(asked.meshing.regionsCut, 0);
+
+    TMesh out;
+    const ShapeApproximationResult r = Approximate(box, out, 4, true, 4);
+    ASSERT_TRUE(r.ok) << r.error;
+    EXPECT_EQ(r.meshable.proxiesRequested, 4);
+    EXPECT_EQ(r.meshable.proxiesFinal, 10);
+    EXPECT_EQ(r.meshable.rounds, 3);
+    EXPECT_EQ(r.meshable.regionsLeft, 0);
+    EXPECT_EQ(r.partition.proxyCount, 10);
+    EXPECT_EQ(r.meshable.splits[int(RegionFault::NotDisc)], 6);
+    EXPECT_EQ(r.meshing.regionsCut, 0);
+    EXPECT_TRUE(r.meshing.validity.IsValid()) << r.meshing.validity.Summary();
+    const std::string says = "k raised from 4 to " + std::to_string(r.meshable.proxiesFinal) + ":";
+    bool logged = false;
+    for (const std::string &m : r.partition.messages) logged |= m.find(says) == 0;
+    EXPECT_TRUE(logged) << r.meshable.Summary();
+}
+
+/// Same input, parameters and seed: the same output, bit for bit.
+TEST(MeshablePartition, IsDeterministic)
+{
+    TMesh box, a, b;
+    vsa_test::MakeBoxWithHole(box, 16);
+    const ShapeApproximationResult ra = Approximate(box, a, 4), rb = Approximate(box, b, 4);
+    ASSERT_TRUE(ra.ok && rb.ok);
+    EXPECT_EQ(ra.inputFaceRegion, rb.inputFaceRegion);
+    ASSERT_EQ(a.VN(), b.VN());
+    ASSERT_EQ(a.FN(), b.FN());
+    for (int v = 0; v < a.VN(); ++v) EXPECT_EQ(a.vert[v].cP(), b.vert[v].cP());
+}
+
+/// The cap: k' never exceeds maxProxyFactor * k (by default 2k), and regions left at fault are
+/// reported, to be cut into discs by the meshing.
+TEST(MeshablePartition, KPrimeStaysWithinItsCap)
+{
+    TMesh box, out;
+    vsa_test::MakeBoxWithHole(box, 16);
+    const ShapeApproximationResult r = Approximate(box, out, 4);
+    ASSERT_TRUE(r.ok) << r.error;
+    EXPECT_EQ(r.meshable.proxiesFinal, 8);
+    EXPECT_GT(r.meshing.regionsCut, 0);
+    EXPECT_TRUE(r.meshing.validity.IsValid()) << r.meshing.validity.Summary();
+    EXPECT_GT(r.meshable.regionsLeft, 0);
+    EXPECT_NE(r.meshable.Summary().find("still do not mesh as one planar polygon"), std::string::npos);
+}
+
+/// An unwelded mesh (every face its own vertices, as STL files have them) is refused with the
+/// hint to weld it first.
+TEST(MeshablePartition, TriangleSoupIsRefusedWithTheWeldHint)
+{
+    TMesh soup, out;
+    vsa_test::BuildFromLists(soup, {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}},
+                             {{0, 1, 2}, {3, 4, 5}});
+    const ShapeApproximationResult r = Approximate(soup, out, 1);
+    EXPECT_FALSE(r.ok);
+    EXPECT_NE(r.error.find("weld it first (MeshLab: Cleaning and Repairing > Merge Close Vertices)"),
+              std::string::npos)
+        << r.error;
+    EXPECT_EQ(out.FN(), 0);
+}
+
+/// SurfaceGrid::NearestFace against brute force, on points around a torus.
+TEST(MeshablePartition, NearestFaceMatchesBruteForce)
+{
+    TMesh torus;
+    vsa_test::MakeTorus(torus, 2, 0.5f, 24, 12);
+    const IndexedMesh im = BuildIndexedMesh(torus);
+    const SurfaceGrid grid(im.positions, im.faces);
+    std::mt19937 random(3);
+    std::uniform_real_distribution<double> coordinate(-3.5, 3.5);
+    for (int q = 0; q < 500; ++q) {
+        const vcg::Point3d p(coordinate(random), coordinate(random), coordinate(random) / 3);
+        auto distance = [&](int f) {
+            const auto &t = im.faces[f];
+            double d;
+            vcg::Point3d closest;
+            vcg::TrianglePointDistance(
+                vcg::Triangle3<double>(im.positions[t[0]], im.positions[t[1]], im.positions[t[2]]), p, d, closest);
+            return d;
+        };
+        double best = std::numeric_limits<double>::infinity();
+        for (int f = 0; f < im.FaceCount(); ++f) best = std::min(best, distance(f));
+        const int nearest = grid.NearestFace(p);
+        ASSERT_GE(nearest, 0);
+        EXPECT_EQ(distance(nearest), best) << "query " << q;
+    }
+}
+
+/// Two distinct vertices at one position, joined by an edge with two faces without area on it
+/// (as CAD exports have them): each became an anchor, and output triangles on both had no area.
+/// The edge is collapsed first: the output has no degenerate face; those faces get the region of
+/// a face on one of their vertices.
+TEST(MeshablePartition, CoincidentVerticesGiveNoDegenerateFace)
+{
+    TMesh cube, out;
+    vsa_test::MakeTessellatedCube(cube, 3);
+    const int faces = cube.FN();
+    for (int corner = 0; corner < 8; ++corner) {  // at every corner of the cube, a zero-length edge
+        const vcg::Point3f at(corner & 1 ? 1 : -1, corner & 2 ? 1 : -1, corner & 4 ? 1 : -1);
+        int fi = 0, i = 0;
+        while (fi < faces && cube.face[fi].cP(i) != at)
+            if (++i == 3) i = 0, ++fi;
+        ASSERT_LT(fi, faces);
+        const vcg::Point3f position = cube.face[fi].cP(i);
+        auto copy = vcg::tri::Allocator<TMesh>::AddVertex(cube, position);
+        // After AddVertex, which may move the vertices.
+        auto u = cube.face[fi].V(i), v = cube.face[fi].V((i + 1) % 3), w = cube.face[fi].V((i + 2) % 3);
+        cube.face[fi].V(i) = &*copy;
+        vcg::tri::Allocator<TMesh>::AddFace(cube, &*copy, u, v);
+        vcg::tri::Allocator<TMesh>::AddFace(cube, w, u, &*copy);
+    }
+    const ShapeApproximationResult r = Approximate(cube, out, 6);
+    ASSERT_TRUE(r.ok) << r.error;
+    EXPECT_EQ(r.input.degenerateFaces, 16);
+    EXPECT_EQ(r.meshing.validity.degenerateFaces, 0);
+    EXPECT_TRUE(r.meshing.validity.IsValid()) << r.meshing.validity.Summary();
+    EXPECT_EQ(out.FN(), 12);
+    EXPECT_EQ(std::count(r.inputFaceRegion.begin(), r.inputFaceRegion.end(), -1), 0);
+    bool logged = false;
+    for (const std::string &m : r.partition.messages) logged |= m.find("8 edges between distinct vertices") == 0;
+    EXPECT_TRUE(logged);
+}
+
+}  // namespace

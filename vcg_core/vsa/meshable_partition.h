@@ -1,0 +1,357 @@
+// Variational Shape Approximation for vcglib — the meshable partition: after Lloyd, regions
+// that cannot become one clean planar polygon are split, so that the meshing has nothing to
+// repair. k grows to k', and the report says why.
+// SPDX-License-Identifier: GPL-3.0-or-later
+#ifndef VSA_MESHABLE_PARTITION_H
+#define VSA_MESHABLE_PARTITION_H
+
+#include <vsa/approximation.h>
+#include <vsa/meshing.h>
+#include <vsa/surface_grid.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace vcg {
+namespace tri {
+namespace vsa {
+
+struct MeshablePartitionParam
+{
+    /// Split regions that do not mesh as one clean planar polygon (raising k to k'); false keeps
+    /// exactly the k asked for and leaves the defects to the meshing's repairs.
+    bool enabled = true;
+    /// k' stays at most this times k (and at least k + 1): a shape that needs more than that is
+    /// left to the meshing's repairs, so that asking for k never gives wildly more.
+    double maxProxyFactor = 2;
+    /// Rounds of meshing, testing and splitting at most; each costs one meshing pass.
+    int maxRounds = 8;
+    /// A region's triangulation may stray from its input faces by this times the region's own
+    /// fit (the farthest of its vertices from its plane), plus kStrayAllowance of the mesh size.
+    double strayFactor = 0;
+    /// Lloyd iterations over the whole partition after each round's splits (0: only the splits'
+    /// own iterations, confined to the regions split).
+    int lloydIterations = 0;
+};
+
+/// Why a region could not be one clean planar polygon, in the order they are split first.
+enum class RegionFault { None = 0, Strays, Intersects, Folds, FacesAway, NotDisc };
+
+struct MeshablePartitionReport
+{
+    int proxiesRequested = 0;  ///< k, as the partition had it after Lloyd
+    int proxiesFinal = 0;      ///< k'
+    int rounds = 0;            ///< rounds that split some region
+    /// Splits per fault (see RegionFault), indexed by the fault.
+    std::array<int, 6> splits{};
+    int regionsLeft = 0;  ///< regions still at fault when the cap on k' or on rounds was reached
+    /// The split partition's output was not valid and the partition as asked did better: it
+    /// was kept, with k regions (see ApproximateShape).
+    bool keptAsked = false;
+
+    /// "k raised from 20 to 34: ..." for the log; empty when k did not change and nothing is left.
+    std::string Summary() const
+    {
+        static const char *const kWhy[] = {"", "strayed from the input", "cut through other regions",
+                                           "folded on their plane", "faced away from the input",
+                                           "were not discs"};
+        std::ostringstream s;
+        if (keptAsked)
+            return "k kept at " + std::to_string(proxiesRequested) + ": splitting regions up to " +
+                   std::to_string(proxiesFinal) + " did not give a valid mesh, the " +
+                   std::to_string(proxiesRequested) + " regions asked for did better";
+        if (proxiesFinal > proxiesRequested) {
+            s << "k raised from " << proxiesRequested << " to " << proxiesFinal
+              << ": a valid mesh of this shape needs more regions (split regions that";
+            const char *sep = " ";
+            for (int f = int(RegionFault::NotDisc); f > 0; --f)
+                if (splits[f]) s << sep << kWhy[f] << ": " << splits[f], sep = ", ";
+            s << ")";
+        }
+        if (regionsLeft > 0)
+            s << (s.tellp() > 0 ? "; " : "") << regionsLeft
+              << " regions still do not mesh as one planar polygon (k' capped at " << proxiesFinal
+              << "): the meshing repairs them";
+        return s.str();
+    }
+};
+
+namespace detail {
+
+/// A region faces away when more than this share of its triangles' area lies nearest to input
+/// faces pointing the other way (sampled, see FacingAwayArea): the target for the whole output
+/// is 1%, and a region under it is better left alone than split for a sample's noise.
+constexpr double kFacingAwayShare = 0.01;
+
+/// Allowance of the stray test, as a fraction of the bounding-box diagonal: anchors sit on
+/// averages of their regions' planes, so even an exactly planar region's triangles move that much.
+constexpr double kStrayAllowance = 2e-3;
+
+/// What a trial meshing says about each region.
+struct RegionTrial
+{
+    std::vector<RegionFault> fault;  ///< per region, the worst
+    std::vector<double> stray;       ///< per region, farthest input vertex from its triangles, over the bound
+    std::vector<int> splitFace;      ///< per region, the IndexedMesh face to split it at, or -1
+    std::vector<double> facingAway;  ///< per region, the share of its triangles' area that faces away
+};
+
+/// The input as the trial meshings need it, built once: a grid of its faces and their normals.
+struct InputSurface
+{
+    explicit InputSurface(const IndexedMesh &in) : grid(in.positions, in.faces), normal(in.FaceCount())
+    {
+        for (int f = 0; f < in.FaceCount(); ++f) {
+            const auto &t = in.faces[f];
+            normal[f] = (in.positions[t[1]] - in.positions[t[0]]) ^ (in.positions[t[2]] - in.positions[t[0]]);
+        }
+    }
+    SurfaceGrid grid;
+    std::vector<Point3d> normal;  ///< per input face, not normalized
+};
+
+/// Per region, the share of its triangles' area whose nearest input face points the other way
+/// (what shades dark where the input does not), from four samples per triangle; and for a
+/// region with some, its input face nearest to the farthest such sample, to split it there.
+inline void MeasureFacingAway(const MeshingSurface &s, const MeshingPass &pass, const InputSurface &input,
+                              RegionTrial &trial)
+{
+    const int regionCount = int(trial.fault.size());
+    std::vector<double> area(regionCount, 0), away(regionCount, 0);
+    for (size_t t = 0; t < pass.triangles.size(); ++t) {
+        const int r = s.cellRegion[pass.triangleCell[t]];
+        const Point3d &a = pass.positions[pass.triangles[t][0]], &b = pass.positions[pass.triangles[t][1]],
+                      &c = pass.positions[pass.triangles[t][2]];
+        const Point3d n = (b - a) ^ (c - a);
+        area[r] += n.Norm();
+        for (const Point3d &p : {(a + b + c) / 3.0, (a * 4 + b + c) / 6.0, (a + b * 4 + c) / 6.0, (a + b + c * 4) / 6.0}) {
+            const int nearest = input.grid.NearestFace(p);
+            if (nearest >= 0 && input.normal[nearest] * n < 0) away[r] += n.Norm() / 4;
+        }
+    }
+    for (int r = 0; r < regionCount; ++r) trial.facingAway[r] = area[r] > 0 ? away[r] / area[r] : 0;
+}
+
+
+/// Per region, the farthest distance of its input vertices from its plane.
+inline std::vector<double> RegionFit(const MeshingSurface &s, const std::vector<Proxy> &proxies)
+{
+    std::vector<double> fit(proxies.size(), 0);
+    for (int f = 0; f < s.FaceCount(); ++f) {
+        const Proxy &p = proxies[s.faceRegion[f]];
+        for (int v : s.faces[f])
+            fit[s.faceRegion[f]] = std::max(fit[s.faceRegion[f]], std::abs((s.positions[v] - p.point) * p.normal));
+    }
+    return fit;
+}
+
+/// Distance from p to the nearest of triangles [first, last) of `order` in `pass`.
+inline double DistanceToTriangles(const MeshingPass &pass, const std::vector<int> &order, int first, int last,
+                                  const Point3d &p)
+{
+    double nearest = std::numeric_limits<double>::infinity();
+    for (int k = first; k < last; ++k) {
+        const auto &t = pass.triangles[order[k]];
+        const vcg::Triangle3<double> tri(pass.positions[t[0]], pass.positions[t[1]], pass.positions[t[2]]);
+        double d;
+        Point3d closest;
+        TrianglePointDistance(tri, p, d, closest);
+        nearest = std::min(nearest, d);
+    }
+    return nearest;
+}
+
+/// Per surface vertex: whether all its faces are in one region. The outline of a region is
+/// the chord criterion's business; only inside it does straying mean a bad polygon.
+inline std::vector<char> InsideRegion(const MeshingSurface &s)
+{
+    std::vector<int> region(s.VertexCount(), -1);
+    std::vector<char> inside(s.VertexCount(), 1);
+    for (int f = 0; f < s.FaceCount(); ++f)
+        for (int v : s.faces[f]) {
+            if (region[v] >= 0 && region[v] != s.faceRegion[f]) inside[v] = 0;
+            region[v] = s.faceRegion[f];
+        }
+    for (int v = 0; v < s.VertexCount(); ++v) inside[v] &= !s.onBorder[v];
+    return inside;
+}
+
+/// Per region: the triangles of `pass` in it, as [offset[r], offset[r + 1]) of `order`.
+inline void TrianglesByRegion(const MeshingSurface &s, const MeshingPass &pass, int regionCount,
+                              std::vector<int> &offset, std::vector<int> &order)
+{
+    std::vector<int> triangleRegion(pass.triangles.size());
+    for (size_t t = 0; t < triangleRegion.size(); ++t) triangleRegion[t] = s.cellRegion[pass.triangleCell[t]];
+    BuildOffsets(triangleRegion, regionCount, offset, order);
+}
+
+/// Per region, how far the input vertices inside it stray from its triangles over what they
+/// may (the stray test).
+inline void MeasureStray(const MeshingSurface &s, const MeshingPass &pass, const std::vector<Proxy> &proxies,
+                         double strayFactor, RegionTrial &trial)
+{
+    std::vector<int> offset, order;
+    TrianglesByRegion(s, pass, int(proxies.size()), offset, order);
+    Box3d box;
+    for (const Point3d &p : s.positions) box.Add(p);
+    const std::vector<double> fit = RegionFit(s, proxies);
+    const std::vector<char> inside = InsideRegion(s);
+    std::vector<char> measured(s.VertexCount(), 0);
+    for (int f = 0; f < s.FaceCount(); ++f) {
+        const int r = s.faceRegion[f];
+        for (int v : s.faces[f]) {
+            if (!inside[v] || measured[v]) continue;
+            measured[v] = 1;
+            const double d = DistanceToTriangles(pass, order, offset[r], offset[r + 1], s.positions[v]);
+            trial.stray[r] = std::max(trial.stray[r], d / (strayFactor * fit[r] + kStrayAllowance * box.Diag()));
+        }
+    }
+}
+
+/// For each region at fault, where to split it: a region that is not a disc (a ring, a closed
+/// piece), which the meshing cut into discs, at its face farthest from its seed outside the
+/// seed's disc, so that the two seeds' floods meet on both sides of the hole; any other at its
+/// face farthest from its triangles, where its flat polygon misses the shape most.
+inline void ChooseSplitFaces(const MeshingSurface &s, const MeshingPass &pass, const std::vector<int> &seeds,
+                             const IndexedMesh &in, RegionTrial &trial)
+{
+    const int regionCount = int(trial.fault.size());
+    std::vector<int> offset, order;
+    TrianglesByRegion(s, pass, regionCount, offset, order);
+    auto centroid = [](const std::vector<Point3d> &p, const std::array<int, 3> &t) {
+        return (p[t[0]] + p[t[1]] + p[t[2]]) / 3.0;
+    };
+    std::vector<int> seedCell(regionCount, -1);
+    for (int f = 0; f < s.FaceCount(); ++f)
+        if (seeds[s.faceRegion[f]] == s.sourceFace[f]) seedCell[s.faceRegion[f]] = s.faceCell[f];
+    std::vector<double> farthest(regionCount, -1);
+    for (int f = 0; f < s.FaceCount(); ++f) {
+        const int r = s.faceRegion[f];
+        if (trial.fault[r] == RegionFault::None) continue;
+        const Point3d c = centroid(s.positions, s.faces[f]);
+        double d;
+        if (trial.fault[r] != RegionFault::NotDisc)
+            d = DistanceToTriangles(pass, order, offset[r], offset[r + 1], c);
+        else if (s.faceCell[f] != seedCell[r])
+            d = (c - centroid(in.positions, in.faces[seeds[r]])).Norm();
+        else
+            continue;
+        if (d > farthest[r]) farthest[r] = d, trial.splitFace[r] = s.sourceFace[f];
+    }
+}
+
+/// Meshes `partition` once, each region as its polygon on its anchors (no repair, no halving),
+/// and tests each region: one disc, a simple polygon on its plane, triangles facing the plane's
+/// side, within the stray bound of its input, meeting no other region's triangles (unless the
+/// input meets itself there). Regions pass when the surface cannot be built: the meshing says why.
+template <class CoordType>
+RegionTrial TrialMeshRegions(const IndexedMesh &in, const InputSurface &input, const Partition &partition,
+                             const std::vector<int> &seeds, const MeshingParam &meshing,
+                             const MeshablePartitionParam &param)
+{
+    const int regionCount = int(partition.proxies.size());
+    RegionTrial trial;
+    trial.fault.assign(regionCount, RegionFault::None);
+    trial.stray.assign(regionCount, 0);
+    trial.splitFace.assign(regionCount, -1);
+    trial.facingAway.assign(regionCount, 0);
+    MeshingSurface s;
+    std::string error;
+    if (!BuildMeshingSurface(in, partition.faceRegion, regionCount, s, error)) return trial;
+    const std::vector<Proxy> proxies = UsableProxies(s, partition.proxies);
+    MeshingParam once = meshing;
+    once.repairRounds = once.halvingRounds = 0;
+    ChordGapTest gapTest(s.positions, s.faces, once.chordGapThreshold);
+    InputIntersections inputIntersections(in);
+    int passes = 0;
+    CellMesher<CoordType> mesher(s, proxies, ChordDeviationBound(s, proxies, once.chordErrorFactor), once, 0,
+                                 once.chordGapThreshold > 0 ? &gapTest : nullptr, inputIntersections, passes, nullptr);
+    mesher.Repair();
+    const MeshingPass &pass = mesher.Best().pass;
+    const PassDefects defects = FindDefects(pass, 0);
+
+    auto flag = [&](int region, RegionFault fault) { trial.fault[region] = std::max(trial.fault[region], fault); };
+    if (param.strayFactor > 0) {
+        MeasureStray(s, pass, proxies, param.strayFactor, trial);
+        for (int r = 0; r < regionCount; ++r)
+            if (trial.stray[r] > 1) flag(r, RegionFault::Strays);
+    }
+    std::vector<int> cells(regionCount, 0);
+    for (int r : s.cellRegion) ++cells[r];
+    for (int r = 0; r < regionCount; ++r)
+        if (cells[r] > 1) flag(r, RegionFault::NotDisc);
+    MeasureFacingAway(s, pass, input, trial);
+    for (int r = 0; r < regionCount; ++r)
+        if (trial.facingAway[r] > kFacingAwayShare) flag(r, RegionFault::FacesAway);
+    for (const PassDefects::Crossing &crossing : defects.crossings) flag(s.cellRegion[crossing.cell], RegionFault::Folds);
+    std::vector<char> meeting(s.CellCount(), 0);
+    for (const auto &[f, g] : defects.intersections) meeting[pass.triangleCell[f]] = meeting[pass.triangleCell[g]] = 1;
+    const std::vector<char> inputMeets = inputIntersections.CellsAmong(s, meeting);
+    for (int c = 0; c < s.CellCount(); ++c)
+        if (meeting[c] && !inputMeets[c]) flag(s.cellRegion[c], RegionFault::Intersects);
+    ChooseSplitFaces(s, pass, seeds, in, trial);
+    return trial;
+}
+
+/// Regions at fault that can be split (two faces at least), worst first: by fault, then by stray.
+inline std::vector<int> RegionsToSplit(const RegionTrial &trial, const Partition &partition)
+{
+    std::vector<int> faces(trial.fault.size(), 0), regions;
+    for (int r : partition.faceRegion) ++faces[r];
+    for (int r = 0; r < int(trial.fault.size()); ++r)
+        if (trial.fault[r] != RegionFault::None && faces[r] > 1) regions.push_back(r);
+    std::stable_sort(regions.begin(), regions.end(), [&](int a, int b) {
+        if (trial.fault[a] != trial.fault[b]) return trial.fault[a] > trial.fault[b];
+        return trial.stray[a] > trial.stray[b];
+    });
+    return regions;
+}
+
+}  // namespace detail
+
+/// Splits the regions of `approximation` that do not mesh as one clean planar polygon (see
+/// detail::TrialMeshRegions), each at its input face farthest from its triangulation, with
+/// Lloyd iterations confined to it (Approximation::Split), and tests again, until every
+/// region passes, k' reaches its cap, or the rounds run out.
+template <class CoordType>
+MeshablePartitionReport MakePartitionMeshable(Approximation &approximation, const MeshingParam &meshing,
+                                              const MeshablePartitionParam &param, vcg::CallBackPos *cb = nullptr)
+{
+    MeshablePartitionReport report;
+    report.proxiesRequested = report.proxiesFinal = approximation.ProxyCount();
+    if (!param.enabled) return report;
+    const int cap = std::max(report.proxiesRequested + 1, int(param.maxProxyFactor * report.proxiesRequested));
+    const detail::InputSurface input(approximation.Mesh());
+    for (int round = 0;; ++round) {
+        if (cb) cb(100 * round / (param.maxRounds + 1), "VSA: splitting regions that do not mesh as one polygon");
+        const detail::RegionTrial trial = detail::TrialMeshRegions<CoordType>(
+            approximation.Mesh(), input, approximation.CurrentPartition(), approximation.SeedFaces(), meshing, param);
+        const std::vector<int> regions = detail::RegionsToSplit(trial, approximation.CurrentPartition());
+        const int room = std::min(int(regions.size()), cap - approximation.ProxyCount());
+        if (regions.empty() || round == param.maxRounds || room <= 0) {
+            report.regionsLeft = int(regions.size());
+            break;
+        }
+        // Split in region order, so that the new regions' indices do not depend on the ranking's ties.
+        std::vector<int> chosen(regions.begin(), regions.begin() + room);
+        std::sort(chosen.begin(), chosen.end());
+        for (int r : chosen) {
+            approximation.Split(r, trial.splitFace[r]);
+            ++report.splits[int(trial.fault[r])];
+        }
+        if (param.lloydIterations > 0) approximation.Run(param.lloydIterations);
+        ++report.rounds;
+    }
+    report.proxiesFinal = approximation.ProxyCount();
+    return report;
+}
+
+}  // namespace vsa
+}  // namespace tri
+}  // namespace vcg
+
+#endif  // VSA_MESHABLE_PARTITION_H
