@@ -35,9 +35,9 @@ def test_the_filter_is_listed_with_its_parameters(vsa_loaded, capfd):
 @pytest.mark.parametrize("metric", [0, 1, "L2,1", "L2"])
 @pytest.mark.parametrize("init", [0, 1, 2, "Random", "Farthest", "Hierarchical"])
 def test_every_metric_and_initialization(fandisk, metric, init):
-    k = 30
-    figures = fandisk.apply_filter(FILTER, proxynum=k, metric=metric, init=init, maxiterations=10)
-    assert figures["proxy_count"] == k
+    figures = fandisk.apply_filter(FILTER, proxynum=30, metric=metric, init=init, maxiterations=10)
+    k = figures["proxy_count"]  # k', when regions that would not mesh as one polygon were split
+    assert 30 <= k <= 60
     assert figures["faces_in"] == FANDISK_FACES
     assert figures["manifold"] and figures["closed"] and figures["oriented"]
 
@@ -66,7 +66,7 @@ def test_the_figures_and_their_python_types(fandisk):
     assert set(figures) == set(FIGURE_TYPES)
     for key, kind in FIGURE_TYPES.items():
         assert type(figures[key]) is kind, key
-    assert figures["proxy_count"] == 40 and figures["faces_in"] == FANDISK_FACES
+    assert 40 <= figures["proxy_count"] <= 80 and figures["faces_in"] == FANDISK_FACES
     assert 0 < figures["energy"] and 1 <= figures["iterations"] <= 30
     assert figures["anchors"] <= figures["vertices_out"]
     assert figures["close_pairs"] == 0 and figures["meshing_passes"] >= 1
@@ -78,8 +78,8 @@ def test_the_output_is_shown_alone_and_named_after_the_source(fandisk):
     assert not fandisk.mesh(0).is_visible()
     assert fandisk.mesh(1).is_visible() and fandisk.current_mesh_id() == 1
     # Approximated again: named after fandisk, not "fandisk VSA k=60 VSA k=20".
-    fandisk.apply_filter(FILTER, proxynum=20)
-    assert fandisk.current_mesh().label() == "fandisk VSA k=20"
+    again = fandisk.apply_filter(FILTER, proxynum=20)
+    assert fandisk.current_mesh().label() == f"fandisk VSA k={again['proxy_count']}"
     assert not fandisk.mesh(1).is_visible()
 
 
@@ -88,7 +88,7 @@ def test_anchor_layer_and_no_colouring(fandisk):
     figures = fandisk.apply_filter(FILTER, proxynum=25, anchorlayer=True, colorizeregions=False)
     assert fandisk.mesh_number() == 3
     output, anchors = fandisk.mesh(1), fandisk.mesh(2)
-    assert output.label() == "fandisk VSA k=25" and anchors.label() == "fandisk VSA anchors"
+    assert output.label() == f"fandisk VSA k={figures['proxy_count']}" and anchors.label() == "fandisk VSA anchors"
     assert anchors.face_number() == 0 and anchors.vertex_number() == figures["anchors"]
     # The anchors are the output's first vertices.
     assert np.array_equal(anchors.vertex_matrix(), output.vertex_matrix()[: figures["anchors"]])
