@@ -8,6 +8,9 @@
 // The tolerance defaults to 0 so that --iterations Lloyd iterations run (unless the partition
 // cycles), like CGAL's run(N): per-iteration timings compare. --out writes the approximating
 // mesh with each face coloured by its region (format from the extension: ply, off, obj).
+// max_progress_gap_s is the longest the progress callback went unheard from the start of the
+// set-up to the end of the meshing (loading the file excluded), max_progress_gap_at where, and
+// max_progress_gap_<stage>_s the longest within each stage.
 #include "off_file.h"
 #include "output_quality.h"
 
@@ -21,8 +24,12 @@
 #include <wrap/io_trimesh/export.h>
 #include <wrap/io_trimesh/import.h>
 
+#include <algorithm>
+#include <chrono>
 #include <set>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace {
 
@@ -100,6 +107,47 @@ std::string Parse(int argc, char **argv, Options &o)
     return {};
 }
 
+/// Wall-clock gaps between progress reports, counting each stage's start and end as reports
+/// (issue 30: the progress bar should move at least once a second): the largest per stage, and
+/// the largest of all with the report that ended it.
+struct ProgressGaps
+{
+    std::chrono::steady_clock::time_point last;
+    std::string stage;
+    std::vector<std::pair<std::string, double>> largestPerStage;
+    double largest = 0;
+    std::string where;
+
+    void Mark(const std::string &what)
+    {
+        const auto now = std::chrono::steady_clock::now();
+        const double gap = std::chrono::duration<double>(now - last).count();
+        largestPerStage.back().second = std::max(largestPerStage.back().second, gap);
+        if (gap > largest) {
+            largest = gap;
+            where = stage + ": " + what;
+        }
+        last = now;
+    }
+
+    /// Ends the current stage, if any, and starts `name` (the gap up to its first report is its own).
+    void Start(const std::string &name)
+    {
+        if (largestPerStage.empty()) last = std::chrono::steady_clock::now();  // after loading
+        else Mark("end");
+        stage = name;
+        largestPerStage.emplace_back(name, 0.0);
+    }
+};
+ProgressGaps progressGaps;
+
+/// A vcg::CallBackPos that feeds progressGaps.
+bool NoteProgress(const int, const char *text)
+{
+    progressGaps.Mark(text);
+    return true;
+}
+
 /// The approximation with each face coloured by its region.
 bool WriteApproximation(BMesh &out, const std::vector<int> &faceRegion, int regionCount, const std::string &path)
 {
@@ -141,26 +189,32 @@ int main(int argc, char **argv)
 
     try {
         vsa_bench::Stopwatch clock;
+        progressGaps.Start("setup");
         IndexedMesh snapshot = BuildIndexedMesh(m);
         const int collapsed = CollapseCoincidentEdgesIfMeshable(snapshot);  // as ApproximateShape does
         Approximation approximation(std::move(snapshot), o.param);
         const double tSetup = clock.Seconds();
         clock.Restart();
-        approximation.Initialize();
+        progressGaps.Start("seeding");
+        approximation.Initialize(&NoteProgress);
         const double tSeed = clock.Seconds();
         clock.Restart();
-        const int iterations = approximation.Run(o.param.maxIterations);
+        progressGaps.Start("iterations");
+        const int iterations = approximation.Run(o.param.maxIterations, &NoteProgress);
         const double tIterations = clock.Seconds();
         const int faces = approximation.Mesh().FaceCount();
         const double peakRssPartitionMb = vsa_bench::PeakRssMb();
         clock.Restart();
+        progressGaps.Start("meshable");
         const MeshablePartitionReport meshable =
-            MakePartitionMeshable<BMesh::CoordType>(approximation, o.meshing, o.meshable);
+            MakePartitionMeshable<BMesh::CoordType>(approximation, o.meshing, o.meshable, &NoteProgress);
+        progressGaps.Start("meshing");
         const ApproximationResult partition = approximation.Result();
         BMesh output;
         const MeshingReport meshing =
-            BuildApproximatingMesh(approximation.Mesh(), partition.partition, o.meshing, output);
+            BuildApproximatingMesh(approximation.Mesh(), partition.partition, o.meshing, output, &NoteProgress);
         const double tMesh = clock.Seconds();
+        progressGaps.Start("measuring");
         // Before the measuring below allocates its own copies and samples.
         const double peakRssMb = vsa_bench::PeakRssMb();
         json.Add("t_seed_s", tSeed)
@@ -178,7 +232,11 @@ int main(int argc, char **argv)
             .Add("proxies", partition.proxyCount)
             .Add("t_setup_s", tSetup)
             .Add("us_per_face_iter", iterations > 0 ? 1e6 * tIterations / (double(faces) * iterations) : 0.0)
-            .Add("reference_energy", partition.referenceEnergy);
+            .Add("reference_energy", partition.referenceEnergy)
+            .Add("max_progress_gap_s", progressGaps.largest)
+            .Add("max_progress_gap_at", progressGaps.where);
+        for (const auto &stage : progressGaps.largestPerStage)
+            if (stage.first != "measuring") json.Add("max_progress_gap_" + stage.first + "_s", stage.second);
         if (o.param.targetError > 0) json.Add("target_error", o.param.targetError);
         if (!meshing.ok) {
             json.Add("valid_output", false).Add("reason", meshing.error).Print();

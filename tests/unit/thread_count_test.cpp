@@ -25,20 +25,23 @@ using vsa_test::TMesh;
 
 const int kThreadCounts[] = {1, 2, 3, 8};
 
-/// Runs `f` with at most `threads` threads, then restores the default.
+/// Runs `f` with at most `threads` threads, every pass of two chunks or more in parallel (the
+/// meshes here are below kParallelMinItems), then restores the defaults.
 template <class F>
 auto WithThreads(int threads, F &&f)
 {
+    detail::ParallelMinItems() = 0;
 #ifdef _OPENMP
     const int before = omp_get_max_threads();
     omp_set_num_threads(threads);
     auto result = f();
     omp_set_num_threads(before);
-    return result;
 #else
     (void)threads;
-    return f();
+    auto result = f();
 #endif
+    detail::ParallelMinItems() = kParallelMinItems;
+    return result;
 }
 
 /// The bytes of a vector of plain values: equal bytes, equal doubles bit for bit (even NaNs).

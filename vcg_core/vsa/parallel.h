@@ -5,6 +5,7 @@
 #define VSA_PARALLEL_H
 
 #include <algorithm>
+#include <cstddef>
 #include <cstdint>
 #include <utility>
 #include <vector>
@@ -21,6 +22,20 @@ namespace vsa {
 /// number of threads, so sums taken chunk by chunk round the same way on any number of cores;
 /// 4096 faces are tens of microseconds of work, far above OpenMP's cost to hand a chunk out.
 constexpr int kChunkItems = 4096;
+
+/// Fewest items for which a pass wakes the other threads; smaller passes run on the calling
+/// thread. On a busy machine a pass waits for every woken thread to be scheduled, up to a time
+/// slice (milliseconds), so only passes of that much work gain (measured in bench/README.md).
+constexpr size_t kParallelMinItems = size_t(1) << 17;
+
+namespace detail {
+/// kParallelMinItems, or what tests set to send small meshes down the parallel path.
+inline size_t &ParallelMinItems()
+{
+    static size_t minItems = kParallelMinItems;
+    return minItems;
+}
+}  // namespace detail
 
 /// Threads a parallel pass may use (OMP_NUM_THREADS or omp_set_num_threads; 1 without OpenMP).
 inline int MaxThreads()
@@ -45,14 +60,15 @@ inline int ThreadIndex()
 /// Number of chunks of kChunkItems that cover `itemCount` items.
 inline int ChunkCount(size_t itemCount) { return int((itemCount + kChunkItems - 1) / kChunkItems); }
 
-/// Calls body(chunk, begin, end) for every chunk of [0, itemCount), spread over the threads.
-/// The body must not throw: an exception cannot leave an OpenMP loop.
+/// Calls body(chunk, begin, end) for every chunk of [0, itemCount), spread over the threads
+/// from detail::ParallelMinItems() items on. The body must not throw: an exception cannot
+/// leave an OpenMP loop.
 template <class Body>
 void ForEachChunk(size_t itemCount, Body &&body)
 {
     const int chunks = ChunkCount(itemCount);
 #ifdef _OPENMP
-#pragma omp parallel for schedule(dynamic, 1) if (chunks > 1)
+#pragma omp parallel for schedule(dynamic, 1) if (chunks > 1 && itemCount >= detail::ParallelMinItems())
 #endif
     for (int c = 0; c < chunks; ++c) {
         const size_t begin = size_t(c) * kChunkItems;
