@@ -154,8 +154,9 @@ inline int CollapseCoincidentEdgesIfMeshable(IndexedMesh &snapshot)
 }
 
 /// Per face of `in`'s container, its region: that of its face in `mesh` (the snapshot), or for a
-/// live face the snapshot left out (collapsed, see CollapseCoincidentEdges) that of a snapshot
-/// face on one of its vertices; -1 for deleted faces.
+/// live face the snapshot left out (collapsed, see CollapseCoincidentEdges) that of a face it
+/// shares a vertex with, spreading over such faces, else that of the snapshot vertex nearest to
+/// its first corner (a component collapsed whole); -1 for deleted faces.
 template <class MeshType>
 std::vector<int> InputFaceRegions(const MeshType &in, const IndexedMesh &mesh, const std::vector<int> &faceRegion)
 {
@@ -164,9 +165,27 @@ std::vector<int> InputFaceRegions(const MeshType &in, const IndexedMesh &mesh, c
         region[mesh.sourceFace[f]] = faceRegion[f];
         for (int v : mesh.faces[f]) vertexRegion[mesh.sourceVertex[v]] = faceRegion[f];
     }
-    for (size_t f = 0; f < in.face.size(); ++f)
-        for (int i = 0; i < 3 && region[f] < 0 && !in.face[f].IsD(); ++i)
-            region[f] = vertexRegion[size_t(in.face[f].cV(i) - &in.vert[0])];
+    auto corner = [&](size_t f, int i) { return size_t(in.face[f].cV(i) - &in.vert[0]); };
+    for (bool spread = true; spread;) {
+        spread = false;
+        for (size_t f = 0; f < in.face.size(); ++f) {
+            if (region[f] >= 0 || in.face[f].IsD()) continue;
+            for (int i = 0; i < 3 && region[f] < 0; ++i) region[f] = vertexRegion[corner(f, i)];
+            if (region[f] < 0) continue;
+            spread = true;
+            for (int i = 0; i < 3; ++i)
+                if (vertexRegion[corner(f, i)] < 0) vertexRegion[corner(f, i)] = region[f];
+        }
+    }
+    for (size_t f = 0; f < in.face.size(); ++f) {
+        if (region[f] >= 0 || in.face[f].IsD()) continue;
+        const Point3d p = Point3d::Construct(in.face[f].cP(0));
+        double nearest = std::numeric_limits<double>::infinity();
+        for (int g = 0; g < mesh.FaceCount(); ++g) {
+            const double d = SquaredDistance(p, mesh.positions[mesh.faces[g][0]]);
+            if (d < nearest) nearest = d, region[f] = faceRegion[g];
+        }
+    }
     return region;
 }
 
