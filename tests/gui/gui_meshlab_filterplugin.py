@@ -69,8 +69,12 @@ def load_plugins(session, main, folder):
         return copied.is_file() and not session.windows("^Load Plugins$")
     session.wait_for(installed, 10, f"MeshLab to copy the plugin to {copied}")
 
-    lines = session.wait_for(lambda: read_if(session, info, "plugin_info_loaded", copied.name, anywhere=True), 10,
-                             f"Plugin Information to list {copied.name}")
+    def listing():
+        # Also its plugin count: a file dialog still painted over it shows the file name too
+        # (its completer), which a busy machine once gave OCR to read instead.
+        lines = read_if(session, info, "plugin_info_loaded", copied.name, anywhere=True)
+        return lines if lines and plugins_loaded(lines) is not None else None
+    lines = session.wait_for(listing, 10, f"Plugin Information to list {copied.name} and its plugin count")
     if plugins_loaded(lines) != loaded_before + 1:
         raise TestFailure(f"Plugin Information counted {plugins_loaded(lines)} plugins after Load Plugins, "
                           f"{loaded_before} before")
