@@ -10,6 +10,7 @@
 #include <vsa/partition.h>
 #include <vsa/proxy.h>
 #include <vsa/seeding.h>
+#include <vsa/tuning.h>
 
 #include <wrap/callback.h>
 
@@ -49,13 +50,13 @@ struct ApproximationParam
     uint64_t randomSeed = 0;  ///< the same seed gives the same result, bit for bit
     /// When the iterations converge, move the proxy whose merge with a neighbour costs least to
     /// the worst region, and iterate again while that keeps lowering the energy. It only ever
-    /// lowers the energy (on CGAL's fandisk, k=100, farthest: 3.4% lower).
+    /// lowers the energy (see docs/tuning.md).
     bool teleport = true;
     /// Full Lloyd iterations during seeding: after random seeds, after each hierarchical round
     /// (at least one), each time farthest seeding doubles the count (every insertion is already
     /// relaxed on the regions it touches); also the confined iterations of Split (at least
-    /// one). 3 lowered the final energy by 0.5-7% on smooth meshes at small k (CGAL's bunny and
-    /// armadillo, k=20 and 100) for 1.5x the seeding time.
+    /// one). More relaxations lower the final energy on smooth meshes at small k, for more
+    /// seeding time (docs/tuning.md).
     int relaxations = 3;
 };
 
@@ -175,7 +176,6 @@ public:
     /// and frees the scratch memory (rebuilt on demand). Returns the number of iterations run.
     int Run(int maxIterations, CallBackPos *cb = nullptr)
     {
-        constexpr double kTeleportStall = 1e-3;
         RequireInitialized("Run");
         if (maxIterations < 0) throw std::invalid_argument("The number of iterations cannot be negative.");
         int done = 0;
@@ -202,9 +202,9 @@ public:
             labelHashes_.push_back(hash);
             const double change = std::abs(previous - energy);
             const bool converged = energy == 0 || change <= param_.tolerance * previous;
-            // Lloyd creeping along (under 0.1% per iteration) or going round without bettering
+            // Lloyd creeping along (under kTeleportStall per iteration) or going round without bettering
             // its best (an oscillation the label hashes miss) is as good a time to teleport.
-            const bool stalled = converged || change <= kTeleportStall * previous || sinceBest >= 2;
+            const bool stalled = converged || change <= detail::kTeleportStall * previous || sinceBest >= 2;
             previous = energy;
             if (cb) cb(maxIterations > 0 ? 100 * done / maxIterations : 100, "VSA: Lloyd iterations");
             if (!cycled && !stalled) continue;

@@ -8,6 +8,7 @@
 #include <vsa/approximation.h>
 #include <vsa/meshing.h>
 #include <vsa/surface_grid.h>
+#include <vsa/tuning.h>
 
 #include <algorithm>
 #include <array>
@@ -81,15 +82,6 @@ struct MeshablePartitionReport
 };
 
 namespace detail {
-
-/// A region faces away when more than this share of its triangles' area lies nearest to input
-/// faces pointing the other way (sampled, see FacingAwayArea): the target for the whole output
-/// is 1%, and a region under it is better left alone than split for a sample's noise.
-constexpr double kFacingAwayShare = 0.01;
-
-/// Allowance of the stray test, as a fraction of the bounding-box diagonal: anchors sit on
-/// averages of their regions' planes, so even an exactly planar region's triangles move that much.
-constexpr double kStrayAllowance = 2e-3;
 
 /// What a trial meshing says about each region.
 struct RegionTrial

@@ -45,8 +45,7 @@ struct RegionState
 /// candidates pop first in, first out, so a region grows breadth-first through faces that fit
 /// it about equally well (whole planar sides tie at error 0). Errors 2^63 times below the
 /// metric's ErrorScale() rank 0. Ranks are few, so this is a bucket queue, O(1) per push and pop: exact
-/// error order cost the flood 1.7 times the time for no better partitions (measured on CGAL's
-/// bunny, fandisk and armadillo over 4 seeds each).
+/// error order cost more time for no better partitions (docs/tuning.md).
 class FloodQueue
 {
 public:

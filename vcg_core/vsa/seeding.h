@@ -6,6 +6,7 @@
 
 #include <vsa/partition.h>
 #include <vsa/patch_graph.h>
+#include <vsa/tuning.h>
 
 #include <wrap/callback.h>
 
@@ -18,24 +19,6 @@
 namespace vcg {
 namespace tri {
 namespace vsa {
-
-namespace detail {
-
-/// Multilevel hierarchical seeding's tuning (SeedHierarchically), in one place.
-/// From this many faces on, seeding starts on patches: below, seeding the faces takes about a
-/// second at most, and its energies are what the patches' are measured against.
-constexpr int kMultilevelFaces = 100000;
-/// Patches at most this big: a round then costs about 1/kMaxPatchFaces of one at full
-/// resolution, and the patches are still small beside the regions on the meshes it helps.
-constexpr int kMaxPatchFaces = 32;
-/// At least this many patches per region, so that regions' borders and energies on the patches
-/// are close to those on the faces, which the Lloyd iterations then refine; 32 cost twice the
-/// coarse rounds where faces per proxy are few, for no lower energy.
-constexpr int kPatchesPerRegion = 16;
-/// Smaller patches would save too little to be worth a coarse level: faces are seeded directly.
-constexpr int kMinPatchFaces = 4;
-
-}  // namespace detail
 
 enum class SeedingMethod
 {
