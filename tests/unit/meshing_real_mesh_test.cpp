@@ -99,7 +99,7 @@ TEST(MeshingRealMeshes, HalvingComesBeforeInputFaces)
         MeshingReport halved;
         CheckCase(c, false, MeshingParam(), &halved);
         EXPECT_EQ(halved.validity.selfIntersections, 0) << c.mesh;
-        EXPECT_GT(halved.halvingRounds, 0) << c.mesh;
+        EXPECT_GT(halved.outputHalvingRound, 0) << c.mesh;
         EXPECT_EQ(halved.regionsKeptAsInput, 0) << c.mesh;
 
         MeshingParam noHalving;
@@ -140,9 +140,9 @@ TEST(MeshingRealMeshes, InputFacesFinishWhatHalvingLeaves)
     EXPECT_EQ(inputFacesOnly.regionsKeptAsInput, 0);
     EXPECT_GT(halvingOnly.validity.selfIntersections, 0);
     EXPECT_LT(halvingOnly.validity.selfIntersections, 10);
-    EXPECT_GT(halvingOnly.halvingRounds, 0);
+    EXPECT_GT(halvingOnly.outputHalvingRound, 0);
     EXPECT_EQ(both.validity.selfIntersections, 0);
-    EXPECT_GT(both.halvingRounds, 0);
+    EXPECT_GT(both.outputHalvingRound, 0);
     EXPECT_GT(both.regionsKeptAsInput, 0);
 }
 
@@ -166,17 +166,17 @@ TEST(MeshingRealMeshes, InputFacesOnlyWithinTheFaceBudget)
     // The passes are reported. Here the repair diverges: it stops kRepairPatience rounds after
     // its best pass (pass 4), the last with at least twice its defects, short of repairRounds
     // (the output is the same as with all of them); keeping input faces takes one more pass.
-    EXPECT_EQ(bounded.repairRounds, 3);
-    EXPECT_EQ(bounded.passes, bounded.repairRounds + 1 + detail::kRepairPatience);
+    EXPECT_EQ(bounded.outputRepairRound, 3);
+    EXPECT_EQ(bounded.passes, bounded.outputRepairRound + 1 + detail::kRepairPatience);
     EXPECT_LT(bounded.passes, 1 + MeshingParam().repairRounds);
     EXPECT_EQ(unbounded.passes, bounded.passes + 1);
-    EXPECT_EQ(unbounded.repairRounds, bounded.passes);
+    EXPECT_EQ(unbounded.outputRepairRound, bounded.passes);
     MeshingParam once;
     once.repairRounds = 0;  // which also means no halving: intersections are never looked for
     MeshingReport single;
     CheckCase(c, false, once, &single);
     EXPECT_EQ(single.passes, 1);
-    EXPECT_EQ(single.repairRounds, 0);
+    EXPECT_EQ(single.outputRepairRound, 0);
 }
 
 TEST(MeshingRealMeshes, DefectsCarriedOverAreThoseFoundFromScratch)
@@ -233,7 +233,7 @@ TEST(MeshingRealMeshes, DefectsCarriedOverAreThoseFoundFromScratch)
     const MeshingReport r = BuildApproximatingMesh(im, partition.partition, keepIntersections, out);
     ASSERT_TRUE(r.ok) << r.error;
     EXPECT_GT(r.passes, 5);
-    EXPECT_GT(r.repairRounds, 0);
+    EXPECT_GT(r.outputRepairRound, 0);
     EXPECT_GT(r.validity.selfIntersections, 100);
     EXPECT_EQ(size_t(r.validity.selfIntersections), detail::SelfIntersectingPairs(BuildIndexedMesh(out)).size());
 }
@@ -262,11 +262,11 @@ TEST(MeshingRealMeshes, HalvingCellsRemovesIntersectionsThatAnchorsCannot)
         CheckCase(c, false, MeshingParam(), &with, record);
         const std::string what = "init " + std::to_string(int(init));
         EXPECT_GT(without.validity.selfIntersections, 100) << what;
-        EXPECT_EQ(without.halvingRounds, 0) << what;
+        EXPECT_EQ(without.outputHalvingRound, 0) << what;
         EXPECT_EQ(with.validity.selfIntersections, 0) << what;
-        EXPECT_GT(with.halvingRounds, 0) << what;
-        EXPECT_LE(with.halvingRounds, MeshingParam().halvingRounds) << what;
-        EXPECT_GE(with.cellsHalved, with.halvingRounds) << what;
+        EXPECT_GT(with.outputHalvingRound, 0) << what;
+        EXPECT_LE(with.outputHalvingRound, MeshingParam().halvingRounds) << what;
+        EXPECT_GE(with.cellsHalved, with.outputHalvingRound) << what;
         EXPECT_EQ(with.cells, without.cells + with.cellsHalved) << what;
         EXPECT_EQ(with.regionsCut, without.regionsCut) << what;  // halves are not regions cut into discs
         ASSERT_FALSE(positions.empty()) << what;
@@ -293,13 +293,13 @@ TEST(MeshingRealMeshes, HalvingGivesUpEarlyOnlyWhereTheInputIntersectsItself)
     halvingCalls = 0;
     CheckCase({"dino.off", 20, SeedingMethod::Farthest}, false, MeshingParam(), &clean, count);
     EXPECT_EQ(clean.validity.selfIntersections, 0);
-    EXPECT_GE(clean.halvingRounds, 3);
-    EXPECT_EQ(halvingCalls, clean.halvingRounds);
+    EXPECT_GE(clean.outputHalvingRound, 3);
+    EXPECT_EQ(halvingCalls, clean.outputHalvingRound);
     halvingCalls = 0;
     CheckCase({"man.off", 20, SeedingMethod::Random}, false, MeshingParam(), &intersecting, count);
     EXPECT_GT(intersecting.validity.selfIntersections, 0);
-    EXPECT_LT(intersecting.halvingRounds + detail::kHalvingPatience, MeshingParam().halvingRounds);
-    EXPECT_EQ(halvingCalls, intersecting.halvingRounds + detail::kHalvingPatience);
+    EXPECT_LT(intersecting.outputHalvingRound + detail::kHalvingPatience, MeshingParam().halvingRounds);
+    EXPECT_EQ(halvingCalls, intersecting.outputHalvingRound + detail::kHalvingPatience);
 }
 
 TEST(MeshingRealMeshes, InputFacesStartFromTheAnchorsOfTheBestPass)
@@ -323,7 +323,7 @@ TEST(MeshingRealMeshes, InputFacesStartFromTheAnchorsOfTheBestPass)
         TMesh out;
         const MeshingReport r = BuildApproximatingMesh(im, partition.partition, MeshingParam(), out);
         ASSERT_TRUE(r.ok) << r.error;
-        EXPECT_GT(r.halvingRounds, 0) << c.mesh;
+        EXPECT_GT(r.outputHalvingRound, 0) << c.mesh;
         EXPECT_GT(r.regionsKeptAsInput, 0) << c.mesh;
         EXPECT_EQ(r.validity.selfIntersections, 0) << c.mesh;
         EXPECT_TRUE(r.validity.IsTwoManifold() && r.validity.IsOriented() && r.validity.IsClosed()) << c.mesh;
@@ -353,9 +353,9 @@ TEST(MeshingRealMeshes, CarvedPiecesFinishWhereWholeCellsCannot)
                                  CarvingCase{{"homer.off", 50, SeedingMethod::Hierarchical}, oneIteration}}) {
         MeshingReport r;
         CheckCase(c.sweep, false, MeshingParam(), &r, nullptr, c.partition);
-        EXPECT_GT(r.carvingRounds, 0) << c.sweep.mesh;
-        EXPECT_LE(r.carvingRounds, detail::kCarvingRounds) << c.sweep.mesh;
-        EXPECT_GE(r.piecesCarved, r.carvingRounds) << c.sweep.mesh;
+        EXPECT_GT(r.outputCarvingRound, 0) << c.sweep.mesh;
+        EXPECT_LE(r.outputCarvingRound, detail::kCarvingRounds) << c.sweep.mesh;
+        EXPECT_GE(r.piecesCarved, r.outputCarvingRound) << c.sweep.mesh;
         EXPECT_EQ(r.validity.selfIntersections, 0) << c.sweep.mesh;
     }
 }
@@ -387,7 +387,7 @@ TEST(MeshingRealMeshes, TheOutputPassIsTheOneWithFewestIntersections)
     MeshingReport r;
     CheckCase(c, false, MeshingParam(), &r);
     EXPECT_EQ(r.validity.selfIntersections, 0);
-    EXPECT_EQ(r.repairRounds, r.passes - 1);
+    EXPECT_EQ(r.outputRepairRound, r.passes - 1);
     EXPECT_GT(r.passes, 10);
 }
 

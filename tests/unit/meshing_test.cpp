@@ -127,7 +127,7 @@ TEST(Meshing, CubeSixRegionsGivesTheEightCorners)
         EXPECT_EQ(run.out.FN(), 12);
         EXPECT_EQ(run.report.validity.selfIntersections, 0);
         EXPECT_EQ(run.report.passes, 1);  // nothing to repair
-        EXPECT_EQ(run.report.repairRounds, 0);
+        EXPECT_EQ(run.report.outputRepairRound, 0);
         for (const Point3d &p : run.output.positions)
             for (int i = 0; i < 3; ++i) EXPECT_NEAR(std::abs(p[i]), 1.0, 1e-7);
         // Hausdorff distance 0: the output's corners are the cube's, and every input vertex
@@ -522,7 +522,7 @@ TEST(Meshing, HalvingACellGivesTwoDiscsOfItsRegionAndLeavesTheOthers)
     Mesh(flat.square, flat.partition, MeshingParam(), run);
     ExpectValidWithInputTopology(run);
     EXPECT_EQ(run.report.validity.selfIntersections, 0);
-    EXPECT_EQ(run.report.halvingRounds, 0);
+    EXPECT_EQ(run.report.outputHalvingRound, 0);
     EXPECT_EQ(run.report.cells, int(before.size()));
 }
 
@@ -1017,7 +1017,7 @@ TEST(Meshing, IntersectionsOfTheInputItselfAreNotRepairedWithInputFaces)
     // The first pass and a repair round that pins the anchors; no pass keeping input faces, no
     // halving of cells.
     EXPECT_EQ(run.report.passes, 2);
-    EXPECT_EQ(run.report.halvingRounds, 0);
+    EXPECT_EQ(run.report.outputHalvingRound, 0);
 }
 
 TEST(Meshing, CrossingPolygonEdgesAreThoseOfTestingEveryPair)

@@ -396,8 +396,8 @@ inline bool FacesIntersect(const IndexedMesh &im, const std::vector<FaceShape> &
 /// one in Scalar the Scalar nearest to it. Each coordinate moves by up to half a unit of its
 /// last digit plus half a unit in the last place of the Scalar, both at most those of the
 /// largest coordinate, and each corner by sqrt(3) times that; twice that is the clearance
-/// (cheese at k=20, farthest: 6 pairs of faces 1e-8 apart in float met as read back in double
-/// from OFF). At most 1e-5 of the bounding-box diagonal, so that a mesh far from the origin
+/// (faces closer than that in float did meet once read back in double, see docs/tuning.md).
+/// At most 1e-5 of the bounding-box diagonal, so that a mesh far from the origin
 /// (where its files lose most of their precision) is not taken for one whose faces all touch.
 template <class Scalar>
 double SavedCoordinateClearance(const std::vector<Point3d> &positions)

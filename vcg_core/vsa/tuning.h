@@ -31,6 +31,23 @@ constexpr double kFacingAwayShare = 0.01;
 /// Stray allowance, of the bounding-box diagonal: projected anchors move even exact planes' triangles that much.
 constexpr double kStrayAllowance = 2e-3;
 
+// --- Meshing (chords.h, cell_triangulation.h, cell_splitting.h, meshing_repair.h, meshing.h) ---
+
+/// Points tested along a chord by the gap test: a chord strays over a hole, not at a point.
+constexpr int kChordGapSamples = 8;
+/// A fan whose thinnest triangle has at least this sine of its smallest angle is good enough.
+constexpr double kGoodFan = 0.05;
+/// Repair rounds give up after this many rounds without a better pass (see PassDefects::BetterThan)...
+constexpr int kRepairPatience = 5;
+/// ...once the last one has at least this many times the best one's defects: the repair diverges.
+constexpr size_t kRepairDivergence = 2;
+/// Halving gives up after this many rounds without fewer pairs where the input meets itself or only close pairs are left.
+constexpr int kHalvingPatience = 2;
+/// Carving rounds at most: a round's pieces can leave pairs that the next one's smaller pieces remove.
+constexpr int kCarvingRounds = 4;
+/// A carved piece is 1/kCarvedShare of its cell: small enough for the face budget, large enough to pass the crossing.
+constexpr int kCarvedShare = 4;
+
 }  // namespace detail
 }  // namespace vsa
 }  // namespace tri
