@@ -1,0 +1,67 @@
+// Tests of vsa/anchors.h.
+#include "meshing_fixtures.h"
+#include "meshing_test_util.h"
+#include "test_meshes.h"
+
+#include <vsa/anchors.h>
+#include <vsa/meshing.h>
+
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cmath>
+#include <functional>
+#include <limits>
+#include <numeric>
+#include <set>
+#include <string>
+#include <vector>
+
+using namespace vcg::tri::vsa;
+using namespace vsa_test;
+using vcg::Point3d;
+
+TEST(Anchors, AnchorProjectionAveragesThePlanesAndIsCapped)
+{
+    // A cube whose corner (1,1,1) is off the three planes; proxies are the exact planes.
+    TMesh cube;
+    vsa_test::MakeTessellatedCube(cube, 2);
+    for (auto &v : cube.vert)
+        if (v.P() == vcg::Point3f(1, 1, 1)) v.P() = vcg::Point3f(1.03f, 1.01f, 0.98f);
+    const IndexedMesh im = BuildIndexedMesh(cube);
+    Partition p = vsa_test::DominantAxisPartition(im);
+    for (int r = 0; r < 6; ++r) {
+        Point3d n(0, 0, 0);
+        n[r / 2] = r % 2 ? 1 : -1;
+        p.proxies[r].normal = n;
+        p.proxies[r].point = n;
+    }
+    const Point3d original = Point3d::Construct(vcg::Point3f(1.03f, 1.01f, 0.98f));
+    // Average of the projections on x = 1, y = 1, z = 1.
+    const Point3d expected = (Point3d(1, original[1], original[2]) + Point3d(original[0], 1, original[2]) +
+                              Point3d(original[0], original[1], 1)) / 3.0;
+    auto cornerOf = [](const TMesh &out, const MeshingReport &r, const IndexedMesh &in, const Point3d &source) {
+        for (int v = 0; v < out.VN(); ++v)
+            if (in.positions[r.vertexSource[v]] == source) return Point3d::Construct(out.vert[v].cP());
+        return Point3d(0, 0, 0);
+    };
+    MeshingParam param;
+    TMesh out;
+    MeshingReport r = BuildApproximatingMesh(im, p, param, out);
+    ASSERT_TRUE(r.ok);
+    EXPECT_LT((cornerOf(out, r, im, original) - expected).Norm(), 1e-6);
+    // Other corners were on their planes already.
+    EXPECT_LT((cornerOf(out, r, im, Point3d(-1, -1, -1)) - Point3d(-1, -1, -1)).Norm(), 1e-7);
+
+    param.projectAnchors = false;
+    r = BuildApproximatingMesh(im, p, param, out);
+    EXPECT_EQ(cornerOf(out, r, im, original), original);
+
+    // Capped at maxAnchorMove times the shortest chord at the anchor (about 2).
+    param.projectAnchors = true;
+    param.maxAnchorMove = 0.002;
+    r = BuildApproximatingMesh(im, p, param, out);
+    const double moved = (cornerOf(out, r, im, original) - original).Norm();
+    const double shortestChord = (original - Point3d(1, 1, -1)).Norm();
+    EXPECT_NEAR(moved, 0.002 * shortestChord, 1e-6);
+}

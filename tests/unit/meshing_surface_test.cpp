@@ -1,0 +1,112 @@
+// Tests of vsa/meshing_surface.h.
+#include "meshing_fixtures.h"
+#include "meshing_test_util.h"
+#include "test_meshes.h"
+
+#include <vsa/meshing_surface.h>
+#include <vsa/meshing.h>
+
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cmath>
+#include <functional>
+#include <limits>
+#include <numeric>
+#include <set>
+#include <string>
+#include <vector>
+
+using namespace vcg::tri::vsa;
+using namespace vsa_test;
+using vcg::Point3d;
+
+TEST(MeshingSurface, IslandAndRingRegionsOnAFlatSquare)
+{
+    TMesh square;
+    IndexedMesh im;
+    const Partition rings = PartitionFlatSquare(square, im, [](int, double r) {
+        return r < 0.3 ? 0 : (r < 0.65 ? 1 : 2);  // island, ring around it, the rest
+    });
+    for (bool polygonal : {false, true}) {
+        MeshingParam param;
+        param.polygonal = polygonal;
+        param.chordThreshold = 0.01;  // keeps the square's corners, which cut off 6% of a chord
+        MeshingRun run;
+        Mesh(square, rings, param, run);
+        ExpectValidWithInputTopology(run);
+        ExpectNoRegionDropped(run, rings);
+        EXPECT_EQ(vsa_test::BorderLoopCount(run.output), 1);
+        EXPECT_EQ(run.report.regionsCut, 2);       // the ring and the square around it
+        EXPECT_EQ(run.report.validity.selfIntersections, 0);
+        for (const Point3d &p : run.output.positions) EXPECT_EQ(p[2], 0.0);
+        // Flat in, flat out: the output tiles the same square, without overlap or gap.
+        EXPECT_NEAR(vsa_test::SurfaceArea(run.output), 4.0, 1e-5);
+        if (polygonal) {
+            // A faux edge never separates two regions, and the faux edges group the faces into
+            // exactly one polygon per disc (a cut ring is two or more polygons, never lost).
+            std::vector<int> group(run.out.face.size());
+            std::iota(group.begin(), group.end(), 0);
+            std::function<int(int)> root = [&](int x) { return group[x] == x ? x : group[x] = root(group[x]); };
+            for (const auto &f : run.out.face)
+                for (int i = 0; i < 3; ++i) {
+                    if (!f.IsF(i)) continue;
+                    for (const auto &h : run.out.face)
+                        for (int j = 0; j < 3; ++j)
+                            if (&h != &f && h.cV(j) == f.cV((i + 1) % 3) && h.cV((j + 1) % 3) == f.cV(i)) {
+                                const int a = int(vcg::tri::Index(run.out, f)), b = int(vcg::tri::Index(run.out, h));
+                                EXPECT_EQ(run.report.faceRegion[a], run.report.faceRegion[b]);
+                                EXPECT_TRUE(h.IsF(j));
+                                group[root(a)] = root(b);
+                            }
+                }
+            std::set<int> polygons;
+            for (int f = 0; f < int(run.out.face.size()); ++f) polygons.insert(root(f));
+            EXPECT_EQ(int(polygons.size()), run.report.cells);
+        }
+    }
+}
+
+TEST(MeshingSurface, ClosedRegionsWithoutBoundary)
+{
+    TMesh sphere;
+    vcg::tri::Sphere(sphere, 3);
+    const IndexedMesh im = BuildIndexedMesh(sphere);
+    const Partition one = vsa_test::PartitionByRule(im, 1, [](int) { return 0; });
+    const Partition halves =
+        vsa_test::PartitionByRule(im, 2, [&](int f) { return vsa_test::FaceCentroid(im, f)[2] > 0 ? 1 : 0; });
+    for (const Partition *partition : {&one, &halves}) {
+        MeshingRun run;
+        Mesh(sphere, *partition, MeshingParam(), run);
+        ExpectValidWithInputTopology(run);
+        ExpectNoRegionDropped(run, *partition);
+        EXPECT_EQ(run.report.validity.eulerCharacteristic, 2);
+        EXPECT_GE(run.out.FN(), 4);
+        // One region: its two halves meet along a cut whose anchors stay on the sphere, so
+        // the output has volume. Two opposite planes, by contrast, make the faithful output
+        // a flat double-sided polygon, whose two sides overlap: not checked.
+        if (partition == &one) {
+            EXPECT_EQ(run.report.validity.selfIntersections, 0);
+        }
+    }
+}
+
+TEST(MeshingSurface, NonManifoldVertexIsSplitPerFan)
+{
+    // Two tetrahedra sharing only vertex 0.
+    TMesh m;
+    vsa_test::BuildFromLists(m, {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {-1, 0, 0}, {0, -1, 0}, {0, 0, -1}},
+                             {{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}, {0, 5, 4}, {0, 4, 6}, {0, 6, 5}, {4, 5, 6}});
+    const IndexedMesh im = BuildIndexedMesh(m);
+    const Partition perFace = vsa_test::PartitionByRule(im, 8, [](int f) { return f; });
+    MeshingRun run;
+    Mesh(m, perFace, MeshingParam(), run);
+    ASSERT_TRUE(run.report.ok) << run.report.error;
+    EXPECT_EQ(run.report.splitVertices, 1);
+    EXPECT_TRUE(run.report.validity.IsValid()) << run.report.validity.Summary();
+    EXPECT_EQ(run.report.validity.nonManifoldVertices, 0);
+    EXPECT_EQ(run.report.validity.components, 2);
+    EXPECT_EQ(run.report.validity.eulerCharacteristic, 4);
+    EXPECT_EQ(run.out.VN(), 8);  // each tetrahedron keeps its four corners
+    EXPECT_EQ(run.out.FN(), 8);
+}
