@@ -475,8 +475,7 @@ int ExpectFiniteOutput(const fs::path &dir, const fs::path &mesh, const std::map
     EXPECT_EQ(run.exitCode, 0) << run.output;
     EXPECT_TRUE(Load(m, out)) << run.output;
     EXPECT_GT(m.FN(), 0) << run.output;
-    for (const auto &v : m.vert)
-        for (int i = 0; i < 3; ++i) EXPECT_TRUE(std::isfinite(v.cP()[i])) << run.output;
+    for (const auto &v : m.vert) EXPECT_TRUE(vcg::tri::vsa::IsFinite(vcg::Point3d::Construct(v.cP()))) << run.output;
     return m.FN();
 }
 }  // namespace

@@ -158,7 +158,7 @@ void Check(const MeshType &in, const std::vector<typename MeshType::CoordType> &
     Require(out.VN() == int(out.vert.size()) && out.FN() == int(out.face.size()), "output not compact");
     Require(out.FN() > 0, "success with an empty output");
     for (const auto &v : out.vert)
-        for (int i = 0; i < 3; ++i) Require(std::isfinite(double(v.cP()[i])), "non-finite output coordinate");
+        Require(vcg::tri::vsa::IsFinite(vcg::Point3d::Construct(v.cP())), "non-finite output coordinate");
     for (const auto &f : out.face) {
         for (int i = 0; i < 3; ++i)
             Require(f.cV(i) >= &out.vert[0] && f.cV(i) < &out.vert[0] + out.vert.size(), "vertex index out of range");

@@ -86,7 +86,7 @@ TEST(ApproximateShape, RefusesAnUnorientedMeshWithARepeatedVertexFaceToo)
 void ExpectFiniteOutput(const TMesh &out, const ShapeApproximationResult &r)
 {
     for (const auto &v : out.vert)
-        for (int i = 0; i < 3; ++i) EXPECT_TRUE(std::isfinite(v.cP()[i])) << "vertex " << (&v - &out.vert[0]);
+        EXPECT_TRUE(vcg::tri::vsa::IsFinite(vcg::Point3d::Construct(v.cP()))) << "vertex " << (&v - &out.vert[0]);
     EXPECT_EQ(r.meshing.validity.nonFiniteVertices, 0);
 }
 
