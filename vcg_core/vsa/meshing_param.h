@@ -130,8 +130,8 @@ struct MeshingReport
             s << "; " << cellsHalved << " cells halved against self-intersections (" << outputHalvingRound
               << " rounds)";
         if (outputCarvingRound)
-            s << "; " << piecesCarved << " pieces carved out of cells against self-intersections (" << outputCarvingRound
-              << " rounds)";
+            s << "; " << piecesCarved << " pieces carved out of cells against self-intersections ("
+              << outputCarvingRound << " rounds)";
         if (emptyRegions) s << "; " << emptyRegions << " empty proxies";
         if (ignoredFaces) s << "; " << ignoredFaces << " input faces with a repeated vertex ignored";
         if (splitVertices) s << "; non-manifold input vertices split into " << splitVertices << " extra vertices";

@@ -11,42 +11,29 @@ namespace tri {
 namespace vsa {
 namespace detail {
 
-// --- Partition (approximation.h, seeding.h) ---
+// Partition: Lloyd (approximation.h).
+constexpr double kTeleportStall = 1e-3;  ///< energy change per iteration below which Lloyd has stalled: teleport
 
-/// Lloyd changing the energy by less than this share per iteration has stalled: time to teleport.
-constexpr double kTeleportStall = 1e-3;
-/// From this many faces on, hierarchical seeding starts on patches: below, the faces take a second at most.
-constexpr int kMultilevelFaces = 100000;
-/// Patches at most this big: a coarse round costs about 1/kMaxPatchFaces of one on the faces.
-constexpr int kMaxPatchFaces = 32;
-/// At least this many patches per region, so that the patches' borders and energies are close to the faces'.
-constexpr int kPatchesPerRegion = 16;
-/// Smaller patches would save too little to be worth a coarse level: faces are seeded directly.
-constexpr int kMinPatchFaces = 4;
+// Multilevel hierarchical seeding (seeding.h).
+constexpr int kMultilevelFaces = 100000;  ///< seed on patches from this many faces: below, faces take a second at most
+constexpr int kMaxPatchFaces = 32;        ///< a coarse round then costs about 1/32 of one on the faces
+constexpr int kPatchesPerRegion = 16;     ///< enough patches that their borders and energies are close to the faces'
+constexpr int kMinPatchFaces = 4;         ///< smaller patches save too little to be worth a coarse level
 
-// --- Meshable partition (meshable_partition.h) ---
+// Meshable partition (meshable_partition.h).
+constexpr double kFacingAwayShare = 0.01;  ///< a region faces away past this share of its area facing the input's back
+constexpr double kStrayAllowance = 2e-3;   ///< of the diagonal: projected anchors move even exact planes' triangles
 
-/// A region faces away when more than this share of its area lies nearest to input facing the other way.
-constexpr double kFacingAwayShare = 0.01;
-/// Stray allowance, of the bounding-box diagonal: projected anchors move even exact planes' triangles that much.
-constexpr double kStrayAllowance = 2e-3;
+// Chords and cells (chords.h, cell_triangulation.h).
+constexpr int kChordGapSamples = 8;  ///< points the gap test tries along a chord: it strays over a hole, not a point
+constexpr double kGoodFan = 0.05;    ///< a fan whose thinnest triangle has this sine of its smallest angle will do
 
-// --- Meshing (chords.h, cell_triangulation.h, cell_splitting.h, meshing_repair.h, meshing.h) ---
-
-/// Points tested along a chord by the gap test: a chord strays over a hole, not at a point.
-constexpr int kChordGapSamples = 8;
-/// A fan whose thinnest triangle has at least this sine of its smallest angle is good enough.
-constexpr double kGoodFan = 0.05;
-/// Repair rounds give up after this many rounds without a better pass (see PassDefects::BetterThan)...
-constexpr int kRepairPatience = 5;
-/// ...once the last one has at least this many times the best one's defects: the repair diverges.
-constexpr size_t kRepairDivergence = 2;
-/// Halving gives up after this many rounds without fewer pairs where the input meets itself or only close pairs are left.
-constexpr int kHalvingPatience = 2;
-/// Carving rounds at most: a round's pieces can leave pairs that the next one's smaller pieces remove.
-constexpr int kCarvingRounds = 4;
-/// A carved piece is 1/kCarvedShare of its cell: small enough for the face budget, large enough to pass the crossing.
-constexpr int kCarvedShare = 4;
+// Repairs, halving, carving (meshing_repair.h, meshing.h, cell_splitting.h): see PassDefects::BetterThan.
+constexpr int kRepairPatience = 5;        ///< repair rounds without a better pass before a diverging repair stops
+constexpr size_t kRepairDivergence = 2;   ///< diverging: the last pass has this many times the best one's defects
+constexpr int kHalvingPatience = 2;       ///< halving rounds without fewer pairs, once only input or close pairs remain
+constexpr int kCarvingRounds = 4;         ///< a round's pieces can leave pairs the next one's smaller pieces remove
+constexpr int kCarvedShare = 4;           ///< a piece is 1/4 of its cell: within the face budget, past the crossing
 
 }  // namespace detail
 }  // namespace vsa
