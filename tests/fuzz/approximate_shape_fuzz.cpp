@@ -119,7 +119,7 @@ void DecodeMesh(Reader &in, double scale, const double offset[3], MeshType &m)
 }
 
 /// Whether `m` is valid, free of self-intersections, and has no face within 1e4 of the area under
-/// which the validity check calls a face degenerate (1e-14 of the squared diagonal): a triangle
+/// which the validity check calls a face degenerate (detail::DegenerateAreaTolerance): a triangle
 /// of the output can be thinner than the input's, and on a face 1e13 times longer than wide that
 /// was enough to fall under it.
 template <class MeshType>
@@ -128,11 +128,10 @@ bool ClearlyValid(const MeshType &m)
     const MeshValidity validity = CheckMeshValidity(m);
     if (!validity.IsValid() || validity.selfIntersections != 0) return false;
     const IndexedMesh im = BuildIndexedMesh(m);
-    vcg::Box3d box;
-    for (const vcg::Point3d &p : im.positions) box.Add(p);
+    const double clearArea = 1e4 * vcg::tri::vsa::detail::DegenerateAreaTolerance(im.positions);
     for (const auto &t : im.faces) {
         const auto &P = im.positions;
-        if (((P[t[1]] - P[t[0]]) ^ (P[t[2]] - P[t[0]])).Norm() < 1e-10 * box.SquaredDiag()) return false;
+        if (((P[t[1]] - P[t[0]]) ^ (P[t[2]] - P[t[0]])).Norm() < clearArea) return false;
     }
     return true;
 }

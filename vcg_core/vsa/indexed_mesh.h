@@ -237,12 +237,19 @@ inline void LabelComponents(IndexedMesh &im)
     }
 }
 
+/// The area under which a face of a mesh with these positions is degenerate: relative to the box
+/// of the finite vertices, so that a millimetre and a kilometre model agree.
+inline double DegenerateAreaTolerance(const std::vector<Point3d> &positions)
+{
+    return 1e-14 * FiniteBox(positions).SquaredDiag();
+}
+
 /// Per face: whether it is degenerate, with no plane to test: it repeats a vertex, its area is
-/// tiny relative to the box of the finite vertices (so that a millimetre and a kilometre model
-/// agree), or a corner is not finite or its area overflows (an infinite box has no grid).
+/// under DegenerateAreaTolerance, or a corner is not finite or its area overflows (an infinite
+/// box has no grid).
 inline std::vector<char> DegenerateFaceMask(const IndexedMesh &im)
 {
-    const double tinyArea = 1e-14 * FiniteBox(im.positions).SquaredDiag();
+    const double tinyArea = DegenerateAreaTolerance(im.positions);
     std::vector<char> degenerate(im.faces.size(), 0);
     ForEachChunk(im.faces.size(), [&](int, size_t begin, size_t end) {
         for (size_t f = begin; f < end; ++f) {
