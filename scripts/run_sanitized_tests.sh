@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
-# The unit tests of vcg_core and the replay of the fuzz seeds and regressions under
-# AddressSanitizer and UndefinedBehaviorSanitizer (-fno-sanitize-recover: any finding fails the
-# run), built in build-sanitize/. Arguments go to the unit tests (e.g. --gtest_filter=...).
+# The unit tests of vcg_core and of the bench's helpers, and the replay of the fuzz seeds and
+# regressions under AddressSanitizer and UndefinedBehaviorSanitizer (-fno-sanitize-recover: any
+# finding fails the run), built in build-sanitize/. Arguments go to both unit test binaries
+# (e.g. --gtest_filter=...).
 set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 bash "$root/scripts/setup.sh"
@@ -11,10 +12,11 @@ mkdir -p "$build"
 cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_FLAGS_RELEASE="-O1 -DNDEBUG" \
   -DVSA_SANITIZE=ON -DVSA_FILTERPLUGIN_MESHLAB_DIR= \
   > "$build/build.log" 2>&1 || { cat "$build/build.log"; exit 1; }
-cmake --build "$build" -j2 --target vsa_unit_tests vsa_fuzz_replay >> "$build/build.log" 2>&1 \
+cmake --build "$build" -j2 --target vsa_unit_tests vsa_bench_helper_tests vsa_fuzz_replay >> "$build/build.log" 2>&1 \
   || { tail -50 "$build/build.log"; exit 1; }
 cd "$build"
 tests/vsa_unit_tests --gtest_brief=1 "$@"
+tests/vsa_bench_helper_tests --gtest_brief=1 "$@"
 tests/fuzz/vsa_fuzz_replay "$root/tests/fuzz/seeds" "$root/tests/fuzz/regressions" 2> fuzz_replay.log \
   || { cat fuzz_replay.log; exit 1; }
 echo "sanitized tests: passed"
