@@ -52,6 +52,8 @@ void DefineVsaParameters(RichParameterList &parameters, const CMeshO &mesh)
     parameters.addParam(RichBool("ProjectAnchors", defaults.meshing.projectAnchors, "Project anchors on proxies",
         "Place each anchor at the average of its projections on the planes of the proxies around it "
         "(as in the paper); when off, anchors keep the position of the original vertex."));
+    // On here, off in MeshingParam: a MeshLab layer always has face flags and users want one polygon
+    // per region; a library caller's mesh type may have no flags (see docs/ARCHITECTURE.md).
     parameters.addParam(RichBool("Polygonal", true, "Polygonal output",
         "Mark the edges inside each region as faux, so MeshLab shows every region as one polygon. A PLY "
         "saved with face flags keeps them (MeshLab 2020.09's polygonal OFF export writes wrong indices)."));

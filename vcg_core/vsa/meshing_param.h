@@ -39,7 +39,8 @@ struct MeshingParam
     /// Cap on that move, as a fraction of the shortest chord at the anchor.
     double maxAnchorMove = 0.5;
     /// Flag the edges inside a region faux (F0/F1/F2), so each region shows as one polygon
-    /// (one per disc when the region had to be cut into discs).
+    /// (one per disc when the region had to be cut into discs). Off by default, as the output
+    /// mesh type may have no face flags; the MeshLab plugin turns it on.
     bool polygonal = false;
     /// Count self-intersecting face pairs of the output in the report (a grid pass, O(F)).
     bool checkSelfIntersections = true;
