@@ -190,9 +190,12 @@ int main(int argc, char **argv)
     try {
         vsa_bench::Stopwatch clock;
         progressGaps.Start("setup");
+        ProgressStage setup(&NoteProgress, "VSA: setting up");  // as ApproximateShape reports it
+        setup.Step(0, 100, vcg::tri::vsa::detail::kSetupItems * m.FN());
         IndexedMesh snapshot = BuildIndexedMesh(m);
         const int collapsed = CollapseCoincidentEdgesIfMeshable(snapshot);  // as ApproximateShape does
         Approximation approximation(std::move(snapshot), o.param);
+        setup.Done();
         const double tSetup = clock.Seconds();
         clock.Restart();
         progressGaps.Start("seeding");

@@ -66,12 +66,16 @@ void Describe(const vsa::ShapeApproximationResult &r, const VsaFilterSettings &s
         log << QString("VSA: warning: %1 face pairs of the output come closer than text files (OFF, OBJ, ASCII PLY "
                        "or STL) keep them apart: read back, they may intersect; binary PLY keeps them exactly")
                    .arg(m.closePairs);
-    log << QString("VSA: time: seeding %1 s, iterations %2 s, meshing %3 s (%5), total %4 s")
+    log << QString("VSA: time: setup %1 s, seeding %2 s, iterations %3 s, meshable split %4 s, meshing %5 s (%6), "
+                   "total %7 s")
+               .arg(r.secondsSetup, 0, 'f', 3)
                .arg(r.secondsSeeding, 0, 'f', 3)
                .arg(r.secondsIterations, 0, 'f', 3)
+               .arg(r.secondsMeshable, 0, 'f', 3)
                .arg(r.secondsMeshing, 0, 'f', 3)
-               .arg(r.secondsSeeding + r.secondsIterations + r.secondsMeshing, 0, 'f', 3)
-               .arg(m.passes == 1 ? QString("1 pass") : QString("%1 passes").arg(m.passes));
+               .arg(m.passes == 1 ? QString("1 pass") : QString("%1 passes").arg(m.passes))
+               .arg(r.secondsSetup + r.secondsSeeding + r.secondsIterations + r.secondsMeshable + r.secondsMeshing, 0,
+                    'f', 3);
 
     auto &f = outcome.figures;
     f["proxy_count"] = p.proxyCount;
@@ -89,8 +93,10 @@ void Describe(const vsa::ShapeApproximationResult &r, const VsaFilterSettings &s
     f["manifold"] = m.validity.IsTwoManifold();
     f["closed"] = m.validity.IsClosed();
     f["oriented"] = m.validity.IsOriented();
+    f["seconds_setup"] = r.secondsSetup;
     f["seconds_seeding"] = r.secondsSeeding;
     f["seconds_iterations"] = r.secondsIterations;
+    f["seconds_meshable"] = r.secondsMeshable;
     f["seconds_meshing"] = r.secondsMeshing;
     f["meshing_passes"] = m.passes;
 }

@@ -161,7 +161,8 @@ void ExpectApproximation(const HostRun &run, const QString &inputName, const QSt
     EXPECT_TRUE(figures["oriented"].toBool());
     EXPECT_EQ(figures["closed"].toBool(), inputClosed);
     EXPECT_GE(figures["meshing_passes"].toInt(), 1);
-    for (const char *timing : {"seconds_seeding", "seconds_iterations", "seconds_meshing"})
+    for (const char *timing :
+         {"seconds_setup", "seconds_seeding", "seconds_iterations", "seconds_meshable", "seconds_meshing"})
         EXPECT_GE(figures[timing].toDouble(-1), 0.0) << timing;
     // Every figure of a type pymeshlab's dict conversion takes (it drops others with a warning).
     const QJsonObject types = run.Run()["output_types"].toObject();

@@ -333,10 +333,12 @@ def vsa_layer_rows(lines, expected):
 
 def added_layer_line(line, expected):
     """The log's 'VSA: added layer "<name>"' line for about `expected`: the small log font
-    sometimes reads 0 as 8, so the name only has to be close (the layer panel's is exact)."""
+    sometimes reads 0 as 8 and y as v, so the line only has to be close (the layer panel's name
+    is exact)."""
     n = norm(line.text)
     prefix = norm("VSA: added layer")
-    return n.startswith(prefix) and difflib.SequenceMatcher(None, n[len(prefix):], norm(expected)).ratio() >= 0.85
+    return (n.startswith("vsa") and difflib.SequenceMatcher(None, n[:len(prefix)], prefix).ratio() >= 0.85 and
+            difflib.SequenceMatcher(None, n[len(prefix):], norm(expected)).ratio() >= 0.85)
 
 
 class MainWindow:

@@ -16,10 +16,10 @@ FIGURE_TYPES = {
     "proxy_count": int, "iterations": int, "energy": float, "faces_in": int, "faces_out": int,
     "vertices_out": int, "anchors": int, "regions_fallback": int, "regions_kept_as_input": int,
     "cells_halved": int, "pieces_carved": int, "close_pairs": int, "manifold": bool, "closed": bool,
-    "oriented": bool, "seconds_seeding": float, "seconds_iterations": float, "seconds_meshing": float,
-    "meshing_passes": int,
+    "oriented": bool, "seconds_setup": float, "seconds_seeding": float, "seconds_iterations": float,
+    "seconds_meshable": float, "seconds_meshing": float, "meshing_passes": int,
 }
-TIMES = {"seconds_seeding", "seconds_iterations", "seconds_meshing"}
+TIMES = {"seconds_setup", "seconds_seeding", "seconds_iterations", "seconds_meshable", "seconds_meshing"}
 
 
 def test_the_filter_is_listed_with_its_parameters(vsa_loaded, capfd):

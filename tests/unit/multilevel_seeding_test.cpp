@@ -13,19 +13,10 @@
 
 using namespace vcg::tri::vsa;
 using vcg::Point3d;
+using vsa_test::PatchesGoal;
 using vsa_test::TMesh;
 
 namespace {
-
-/// A count goal that seeds on patches whatever the mesh's size.
-SeedingGoal PatchesGoal(int k)
-{
-    SeedingGoal goal;
-    goal.proxyCount = k;
-    goal.relaxations = ApproximationParam().relaxations;
-    goal.multilevelFaces = 0;
-    return goal;
-}
 
 IndexedMesh TessellatedCube(int n)
 {
@@ -47,7 +38,8 @@ RegionState Seed(const IndexedMesh &im, const FaceGeometry &g, const SeedingGoal
     EXPECT_GT(detail::PatchFaces(im.FaceCount(), goal), 1) << "not seeded on patches";
     if (onFaces) {
         detail::StartOnePerComponent(im, metric, g, s, random);
-        detail::DoublingRounds(im, metric, g, s, goal, ws, nullptr);
+        ProgressStage silent(nullptr, "");
+        detail::DoublingRounds(im, metric, g, s, goal, ws, silent, 0, 100);
     } else {
         SeedHierarchically(im, metric, g, s, goal, random, ws);
     }

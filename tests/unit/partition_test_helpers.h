@@ -4,8 +4,10 @@
 
 #include "test_meshes.h"
 
+#include <vsa/approximation.h>
 #include <vsa/indexed_mesh.h>
 #include <vsa/proxy.h>
+#include <vsa/seeding.h>
 
 #include <vcg/complex/append.h>
 
@@ -52,6 +54,16 @@ inline vcg::tri::vsa::IndexedMesh LoadCgalMesh(const std::string &name)
     std::string error;
     if (!LoadMesh(m, CgalMesh(name), &error)) throw std::runtime_error("cannot load " + name + ": " + error);
     return vcg::tri::vsa::BuildIndexedMesh(m);
+}
+
+/// A count goal that seeds on patches whatever the mesh's size.
+inline vcg::tri::vsa::SeedingGoal PatchesGoal(int k, int relaxations = vcg::tri::vsa::ApproximationParam().relaxations)
+{
+    vcg::tri::vsa::SeedingGoal goal;
+    goal.proxyCount = k;
+    goal.relaxations = relaxations;
+    goal.multilevelFaces = 0;
+    return goal;
 }
 
 /// Side of the tessellated cube a face lies on, 0..5, from its vertices' shared coordinate.

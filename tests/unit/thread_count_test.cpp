@@ -138,10 +138,7 @@ TEST(ThreadCount, MultilevelSeedingIsTheSameBitsOnAnyNumberOfThreads)
     const IndexedMesh im = Indexed("armadillo.off");
     const FaceGeometry g = ComputeFaceGeometry(im, true);
     const L2Metric metric(g);
-    SeedingGoal goal;
-    goal.proxyCount = 100;
-    goal.relaxations = 2;
-    goal.multilevelFaces = 0;  // on patches, whatever the size
+    const SeedingGoal goal = vsa_test::PatchesGoal(100, 2);
     ASSERT_GT(detail::PatchFaces(im.FaceCount(), goal), 1);
     std::string reference;
     for (int threads : kThreadCounts) {

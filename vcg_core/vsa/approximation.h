@@ -8,6 +8,7 @@
 #include <vsa/indexed_mesh.h>
 #include <vsa/metrics.h>
 #include <vsa/partition.h>
+#include <vsa/progress.h>
 #include <vsa/proxy.h>
 #include <vsa/seeding.h>
 #include <vsa/tuning.h>
@@ -59,6 +60,12 @@ struct ApproximationParam
     /// seeding time (docs/tuning.md).
     int relaxations = 3;
 };
+
+namespace detail {
+/// Items of work (ProgressTick) per face, roughly, of the set-up: BuildIndexedMesh, collapsing
+/// coincident edges, and the Approximation's constructor (faces' geometry, reference energy).
+constexpr double kSetupItems = 24;
+}  // namespace detail
 
 /// What the partitioning produced; ok == false means nothing else is filled in but `error`.
 struct ApproximationResult
@@ -184,7 +191,10 @@ public:
         double previous = Energy();
         double bestAtLastTeleport = std::numeric_limits<double>::infinity();
         std::string stop = "stopped after the maximum of " + std::to_string(maxIterations) + " iterations";
+        ProgressStage progress(cb, "VSA: Lloyd iterations");
         while (done < maxIterations) {
+            progress.Step(100.0 * done / maxIterations, 100.0 * (done + 1) / maxIterations,
+                          detail::kLloydItems * mesh_.FaceCount());
             SaveBest();
             WithMetric([&](const auto &metric, auto &ws) { LloydIteration(mesh_, metric, state_, ws); });
             ++done;
@@ -206,7 +216,6 @@ public:
             // its best (an oscillation the label hashes miss) is as good a time to teleport.
             const bool stalled = converged || change <= detail::kTeleportStall * previous || sinceBest >= 2;
             previous = energy;
-            if (cb) cb(maxIterations > 0 ? 100 * done / maxIterations : 100, "VSA: Lloyd iterations");
             if (!cycled && !stalled) continue;
             if (param_.teleport && done < maxIterations && BestEnergy() < bestAtLastTeleport) {
                 bestAtLastTeleport = BestEnergy();
@@ -238,6 +247,7 @@ public:
         if (teleports) s << ", with " << teleports << " teleport(s)";
         s << "; energy " << Energy() << ".";
         messages_.push_back(s.str());
+        progress.Done();
         return done;
     }
 

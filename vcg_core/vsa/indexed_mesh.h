@@ -4,6 +4,7 @@
 #define VSA_INDEXED_MESH_H
 
 #include <vsa/parallel.h>
+#include <vsa/progress.h>
 
 #include <vcg/complex/complex.h>
 
@@ -120,13 +121,18 @@ inline void BuildOffsets(const std::vector<int> &keyOfItem, int keyCount, std::v
                          std::vector<int> &list)
 {
     offset.assign(size_t(keyCount) + 1, 0);
-    for (int k : keyOfItem)
+    ProgressCounter progress;
+    for (int k : keyOfItem) {
         if (k >= 0) ++offset[size_t(k) + 1];
+        progress.Count();
+    }
     std::partial_sum(offset.begin(), offset.end(), offset.begin());
     list.resize(size_t(offset.back()));
     std::vector<int> fill(offset.begin(), offset.end() - 1);
-    for (size_t item = 0; item < keyOfItem.size(); ++item)
+    for (size_t item = 0; item < keyOfItem.size(); ++item) {
         if (keyOfItem[item] >= 0) list[fill[keyOfItem[item]]++] = int(item);
+        progress.Count();
+    }
 }
 
 /// Pairs up the edges of the faces: fills `neighbors` and counts border, non-manifold and
@@ -138,11 +144,14 @@ inline void LinkFaces(IndexedMesh &im, MeshDiagnostics &diag)
     // each holding only its upper vertex: on big meshes the cost is memory traffic, not
     // comparisons.
     std::vector<int> lowerVertex(size_t(faceCount) * 3);  // per face edge
-    for (int f = 0; f < faceCount; ++f)
+    ProgressCounter progress;
+    for (int f = 0; f < faceCount; ++f) {
         for (int i = 0; i < 3; ++i) {
             const int a = im.faces[f][i], b = im.faces[f][(i + 1) % 3];
             lowerVertex[3 * f + i] = a == b ? -1 : std::min(a, b);  // -1: joins nothing, left out
         }
+        progress.Count(3);
+    }
     std::vector<int> bucketOffset, faceEdges;
     BuildOffsets(lowerVertex, im.VertexCount(), bucketOffset, faceEdges);
     struct HalfEdge { int upperVertex, faceEdge; };
@@ -150,6 +159,7 @@ inline void LinkFaces(IndexedMesh &im, MeshDiagnostics &diag)
     for (size_t k = 0; k < faceEdges.size(); ++k) {
         const int e = faceEdges[k];
         edges[k] = {std::max(im.faces[e / 3][e % 3], im.faces[e / 3][(e % 3 + 1) % 3]), e};
+        progress.Count();
     }
     // Each small bucket sorted by (upper vertex, faceEdge): then the half-edges of one edge
     // are consecutive, in faceEdge order. Buckets are independent: in parallel, each chunk of
@@ -197,7 +207,8 @@ inline int CountNonManifoldVertices(const IndexedMesh &im)
     const int faceCount = im.FaceCount();
     std::vector<int> cornerParent(size_t(faceCount) * 3);
     std::iota(cornerParent.begin(), cornerParent.end(), 0);
-    for (int f = 0; f < faceCount; ++f)
+    ProgressCounter progress;
+    for (int f = 0; f < faceCount; ++f) {
         for (int i = 0; i < 3; ++i) {
             const int g = im.neighbors[f][i];
             if (g < f) continue;  // each manifold edge once (and skip -1)
@@ -207,10 +218,14 @@ inline int CountNonManifoldVertices(const IndexedMesh &im)
                 if (im.faces[g][j] == b) Unite(cornerParent, 3 * f + (i + 1) % 3, 3 * g + j);
             }
         }
+        progress.Count(3);
+    }
     // Count fans per vertex: a fan is a root corner; a vertex with two roots is non-manifold.
     std::vector<int> fans(im.positions.size(), 0);
-    for (int c = 0; c < 3 * faceCount; ++c)
+    for (int c = 0; c < 3 * faceCount; ++c) {
         if (FindRoot(cornerParent, c) == c) ++fans[im.faces[c / 3][c % 3]];
+        progress.Count();
+    }
     return int(std::count_if(fans.begin(), fans.end(), [](int n) { return n > 1; }));
 }
 
@@ -220,6 +235,7 @@ inline void LabelComponents(IndexedMesh &im)
     im.component.assign(faceCount, -1);
     im.componentCount = 0;
     std::vector<int> stack;
+    ProgressCounter progress;
     for (int start = 0; start < faceCount; ++start) {
         if (im.component[start] >= 0) continue;
         im.component[start] = im.componentCount;
@@ -227,6 +243,7 @@ inline void LabelComponents(IndexedMesh &im)
         while (!stack.empty()) {
             const int f = stack.back();
             stack.pop_back();
+            progress.Count();
             for (int g : im.neighbors[f])
                 if (g >= 0 && im.component[g] < 0) {
                     im.component[g] = im.componentCount;
@@ -290,9 +307,11 @@ IndexedMesh BuildIndexedMesh(const MeshType &m, MeshDiagnostics *diagnostics = n
     im.sourceVertex.reserve(m.vert.size());
     im.faces.reserve(m.face.size());
     im.sourceFace.reserve(m.face.size());
+    ProgressCounter progress;
     for (size_t fi = 0; fi < m.face.size(); ++fi) {
         const auto &face = m.face[fi];
         if (face.IsD()) continue;
+        progress.Count();
         std::array<int, 3> tri;
         for (int k = 0; k < 3; ++k) {
             const size_t vi = size_t(face.cV(k) - &m.vert[0]);
@@ -319,13 +338,15 @@ IndexedMesh BuildIndexedMesh(const MeshType &m, MeshDiagnostics *diagnostics = n
 /// `im` with every edge between two distinct vertices at the same position collapsed, and the
 /// faces left without area by that (they repeat a vertex then) left out; `collapsed` gets the
 /// number of vertices merged away. Such edges (CAD exports, STL welded by index) would become
-/// two anchors at one point, and every output triangle on both would have no area.
+/// two anchors at one point, and every output triangle on both would have no area. When there
+/// is none, returns an empty mesh rather than a copy of `im`, which would stall a large set-up.
 inline IndexedMesh CollapseCoincidentEdges(const IndexedMesh &im, int &collapsed, MeshDiagnostics *diagnostics = nullptr)
 {
     std::vector<int> parent(im.VertexCount());
     std::iota(parent.begin(), parent.end(), 0);
     collapsed = 0;
-    for (const auto &t : im.faces)
+    ProgressCounter progress;
+    for (const auto &t : im.faces) {
         for (int i = 0; i < 3; ++i) {
             const int a = t[i], b = t[(i + 1) % 3];
             if (a != b && im.positions[a] == im.positions[b] && detail::FindRoot(parent, a) != detail::FindRoot(parent, b)) {
@@ -333,10 +354,13 @@ inline IndexedMesh CollapseCoincidentEdges(const IndexedMesh &im, int &collapsed
                 ++collapsed;
             }
         }
-    if (collapsed == 0) return im;
+        progress.Count();
+    }
+    if (collapsed == 0) return {};
     IndexedMesh out;
     std::vector<int> newIndex(im.VertexCount(), -1);
     for (int f = 0; f < im.FaceCount(); ++f) {
+        progress.Count();
         std::array<int, 3> t;
         for (int i = 0; i < 3; ++i) t[i] = detail::FindRoot(parent, im.faces[f][i]);
         if (RepeatsVertex(t)) continue;

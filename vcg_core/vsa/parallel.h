@@ -4,6 +4,8 @@
 #ifndef VSA_PARALLEL_H
 #define VSA_PARALLEL_H
 
+#include <vsa/progress.h>
+
 #include <algorithm>
 #include <cstddef>
 #include <cstdint>
@@ -57,12 +59,23 @@ inline int ThreadIndex()
 #endif
 }
 
+/// Threads in the current parallel pass (1 outside one).
+inline int TeamSize()
+{
+#ifdef _OPENMP
+    return omp_get_num_threads();
+#else
+    return 1;
+#endif
+}
+
 /// Number of chunks of kChunkItems that cover `itemCount` items.
 inline int ChunkCount(size_t itemCount) { return int((itemCount + kChunkItems - 1) / kChunkItems); }
 
 /// Calls body(chunk, begin, end) for every chunk of [0, itemCount), spread over the threads
 /// from detail::ParallelMinItems() items on. The body must not throw: an exception cannot
-/// leave an OpenMP loop.
+/// leave an OpenMP loop. Only the calling thread (thread 0) ticks the progress, counting each of
+/// its chunks once per thread as the others work alongside.
 template <class Body>
 void ForEachChunk(size_t itemCount, Body &&body)
 {
@@ -71,8 +84,9 @@ void ForEachChunk(size_t itemCount, Body &&body)
 #pragma omp parallel for schedule(dynamic, 1) if (chunks > 1 && itemCount >= detail::ParallelMinItems())
 #endif
     for (int c = 0; c < chunks; ++c) {
-        const size_t begin = size_t(c) * kChunkItems;
-        body(c, begin, std::min(itemCount, begin + kChunkItems));
+        const size_t begin = size_t(c) * kChunkItems, end = std::min(itemCount, begin + kChunkItems);
+        body(c, begin, end);
+        if (ThreadIndex() == 0) ProgressTick(double(end - begin) * TeamSize());
     }
 }
 

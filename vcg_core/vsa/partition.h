@@ -185,7 +185,16 @@ template <class Graph, class Metric, class Neighbors>
 void PrepareNodes(const Graph &mesh, const Metric &metric, PartitionWorkspace<Metric, Neighbors> &ws)
 {
     if (int(ws.nodes.size()) == mesh.FaceCount()) return;
-    ws.nodes.resize(mesh.FaceCount());
+    // Grown a chunk at a time: zeroing the nodes of millions of faces (64 bytes each) takes long
+    // enough to report on.
+    ws.nodes.clear();
+    ws.nodes.reserve(size_t(mesh.FaceCount()));
+    for (size_t size = 0; size < size_t(mesh.FaceCount());) {
+        const size_t grown = std::min(size_t(mesh.FaceCount()), size + kChunkItems);
+        ws.nodes.resize(grown);
+        ProgressTick(double(grown - size));
+        size = grown;
+    }
     ForEachChunk(size_t(mesh.FaceCount()), [&](int, size_t begin, size_t end) {
         for (size_t f = begin; f < end; ++f) {
             ws.nodes[f].region = 0;
@@ -218,8 +227,10 @@ void Flood(const Metric &metric, const std::vector<Proxy> &proxies, const std::v
     for (const auto &seed : seeds) nodes[seed.second].region = seed.first;
     for (const auto &seed : seeds)
         for (int g : nodes[seed.second].neighbors) offer(g, seed.first);
+    ProgressCounter progress;
     while (!queue.Empty()) {
         const FloodQueue::Candidate c = queue.Pop();
+        progress.Count();
         Node &node = nodes[c.face];
         if (node.region >= 0) continue;
         node.region = c.region;
@@ -293,13 +304,18 @@ int FloodWithin(const Graph &mesh, const Metric &metric, const std::vector<Proxy
                 std::vector<int> &faceRegion, PartitionWorkspace<Metric, Neighbors> &ws)
 {
     detail::PrepareNodes(mesh, metric, ws);
+    ProgressCounter progress;
     for (int f : faces) {
         ws.nodes[f].queuedRank = FloodQueue::kNoRank;
         ws.nodes[f].region = -1;
+        progress.Count();
     }
     detail::Flood(metric, proxies, seeds, ws);
     int unreached = 0;
-    for (int f : faces) unreached += !detail::TakeLabel(ws.nodes[f], faceRegion[f]);
+    for (int f : faces) {
+        unreached += !detail::TakeLabel(ws.nodes[f], faceRegion[f]);
+        progress.Count();
+    }
     return unreached;
 }
 
@@ -426,9 +442,11 @@ int GrowRegion(const Graph &mesh, const Metric &metric, const FaceGeometry &g, R
     ws.stack.clear();
     ws.visitMark[seed] = stamp;
     take(seed, metric.Error(seed, proxy));
+    ProgressCounter progress;
     while (!ws.stack.empty()) {
         const int f = ws.stack.back();
         ws.stack.pop_back();
+        progress.Count();
         for (int next : mesh.neighbors[f]) {
             if (next < 0 || ws.visitMark[next] == stamp) continue;
             ws.visitMark[next] = stamp;  // its errors cannot change during this growth: look once

@@ -8,6 +8,7 @@
 #include <vsa/face_geometry.h>
 #include <vsa/indexed_mesh.h>
 #include <vsa/metrics.h>
+#include <vsa/progress.h>
 #include <vsa/proxy.h>
 
 #include <algorithm>
@@ -74,15 +75,21 @@ PatchGraph<Metric> BuildPatchGraph(const IndexedMesh &mesh, const Metric &metric
     graph.component.resize(patchCount);
     graph.componentCount = mesh.componentCount;
     SumMoments(metric, [&](size_t f) { return patchOf[f]; }, patchOf.size(), graph.moments);
-    for (int f = 0; f < mesh.FaceCount(); ++f) graph.component[patchOf[f]] = mesh.component[f];
+    ProgressCounter progress;
+    for (int f = 0; f < mesh.FaceCount(); ++f) {
+        graph.component[patchOf[f]] = mesh.component[f];
+        progress.Count();
+    }
 
     // Every edge between two patches, bucketed by patch, then each bucket sorted and deduplicated.
     std::vector<int> &offset = graph.neighbors.offset, &list = graph.neighbors.list;
     offset.assign(patchCount + 1, 0);
     const auto forEachCrossing = [&](auto visit) {
-        for (int f = 0; f < mesh.FaceCount(); ++f)
+        for (int f = 0; f < mesh.FaceCount(); ++f) {
             for (int g : mesh.neighbors[f])
                 if (g >= 0 && patchOf[g] != patchOf[f]) visit(patchOf[f], patchOf[g]);
+            progress.Count();
+        }
     };
     forEachCrossing([&](int p, int) { ++offset[p + 1]; });
     for (int p = 0; p < patchCount; ++p) offset[p + 1] += offset[p];
@@ -93,6 +100,7 @@ PatchGraph<Metric> BuildPatchGraph(const IndexedMesh &mesh, const Metric &metric
     for (int p = 0; p < patchCount; ++p) {
         const int first = offset[p], last = offset[p + 1];
         std::sort(list.begin() + first, list.begin() + last);
+        progress.Count(last - first);
         offset[p] = kept;
         for (int i = first; i < last; ++i)
             if (i == first || list[i] != list[kept - 1]) list[kept++] = list[i];

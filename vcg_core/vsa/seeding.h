@@ -6,11 +6,13 @@
 
 #include <vsa/partition.h>
 #include <vsa/patch_graph.h>
+#include <vsa/progress.h>
 #include <vsa/tuning.h>
 
 #include <wrap/callback.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <limits>
 #include <random>
@@ -19,6 +21,11 @@
 namespace vcg {
 namespace tri {
 namespace vsa {
+
+namespace detail {
+/// The seeding's progress text (ProgressStage).
+constexpr const char *kSeedingText = "VSA: seeding proxies";
+}  // namespace detail
 
 enum class SeedingMethod
 {
@@ -63,9 +70,21 @@ private:
 
 namespace detail {
 
-inline void Progress(CallBackPos *cb, int done, int total)
+/// How far seeding from `first` towards `goal` proxies is at `count`, 0..1: by the logarithm of
+/// the count, for each doubling of it costs about the same.
+inline double CountShare(int count, int first, int goal)
 {
-    if (cb) cb(total > 0 ? std::min(100, int(100.0 * done / total)) : 100, "VSA: seeding proxies");
+    if (goal <= first || count <= first) return count >= goal ? 1 : 0;
+    return std::min(1.0, std::log(double(count) / first) / std::log(double(goal) / first));
+}
+
+/// Steps `progress` over seeding from `count` to `next` proxies, within positions [from, to]
+/// for `first` to `goal` proxies, in about `items` items of work.
+inline void StepCounts(ProgressStage &progress, double from, double to, int first, int goal, int count, int next,
+                       double items)
+{
+    progress.Step(from + (to - from) * CountShare(count, first, goal), from + (to - from) * CountShare(next, first, goal),
+                  items);
 }
 
 template <class Graph, class Metric, class Neighbors>
@@ -84,7 +103,11 @@ public:
     {
         lists_.assign(s.RegionCount(), {});
         const auto &faceRegion = s.partition.faceRegion;
-        for (int f = 0; f < int(faceRegion.size()); ++f) lists_[faceRegion[f]].push_back(f);
+        ProgressCounter progress;
+        for (int f = 0; f < int(faceRegion.size()); ++f) {
+            lists_[faceRegion[f]].push_back(f);
+            progress.Count();
+        }
         size.resize(lists_.size());
         for (size_t r = 0; r < lists_.size(); ++r) size[r] = int(lists_[r].size());
         slot_.assign(lists_.size(), -1);
@@ -130,7 +153,11 @@ void RefitWithin(const Metric &metric, RegionState &s, RegionFaces &lists, const
         moments.push_back(metric.EmptyMoments(s.partition.proxies[regions[i]].point));
     }
     const auto &faceRegion = s.partition.faceRegion;
-    for (int f : faces) metric.Add(moments[slot[faceRegion[f]]], f);
+    ProgressCounter progress;
+    for (int f : faces) {
+        metric.Add(moments[slot[faceRegion[f]]], f);
+        progress.Count();
+    }
     std::vector<double> seedError(regions.size(), std::numeric_limits<double>::infinity());
     for (size_t i = 0; i < regions.size(); ++i) {
         Proxy &proxy = s.partition.proxies[regions[i]];
@@ -146,6 +173,7 @@ void RefitWithin(const Metric &metric, RegionState &s, RegionFaces &lists, const
             seedError[i] = e;
             s.seeds[r] = f;
         }
+        progress.Count();
     }
     for (int r : regions) slot[r] = -1;
 }
@@ -216,12 +244,14 @@ void PickOnePerComponent(const Graph &mesh, const Metric &metric, const FaceGeom
     for (int c = 0; c < mesh.componentCount; ++c) pick[c] = int(random.Below(uint64_t(componentSize[c])));
     s.seeds.assign(mesh.componentCount, -1);
     s.partition.proxies.resize(mesh.componentCount);
+    ProgressCounter progress;
     for (int f = 0; f < faceCount; ++f) {
         const int c = mesh.component[f];
         if (pick[c]-- == 0) {
             s.seeds[c] = f;
             s.partition.proxies[c] = FitFace(metric, g, f);
         }
+        progress.Count();
     }
     s.partition.faceRegion = mesh.component;
     s.faceError.assign(faceCount, 0);
@@ -244,8 +274,11 @@ void AddRandomSeeds(const Metric &metric, const FaceGeometry &g, RegionState &s,
 {
     std::vector<int> candidates;
     candidates.reserve(s.faceError.size() - s.seeds.size());
-    for (int f = 0; f < int(s.faceError.size()); ++f)
+    ProgressCounter progress;
+    for (int f = 0; f < int(s.faceError.size()); ++f) {
         if (!s.IsSeed(f)) candidates.push_back(f);
+        progress.Count();
+    }
     count = std::min(count, int(candidates.size()));
     for (int i = 0; i < count; ++i) {  // partial Fisher-Yates: the first `count` are a uniform draw
         std::swap(candidates[i], candidates[i + random.Below(uint64_t(candidates.size() - i))]);
@@ -266,19 +299,27 @@ void SeedRandomly(const IndexedMesh &mesh, const Metric &metric, const FaceGeome
                   const SeedingGoal &goal, SeedRandom &random, PartitionWorkspace<Metric> &ws,
                   CallBackPos *cb = nullptr)
 {
+    ProgressStage progress(cb, detail::kSeedingText);
+    const double faces = mesh.FaceCount();
     detail::StartOnePerComponent(mesh, metric, g, s, random);
     if (goal.targetEnergy > 0) {
+        const int first = s.RegionCount();
         while (s.RegionCount() < goal.proxyCount && s.Energy() > goal.targetEnergy) {
-            detail::AddRandomSeeds(metric, g, s, std::min(s.RegionCount(), goal.proxyCount - s.RegionCount()), random);
+            const int added = std::min(s.RegionCount(), goal.proxyCount - s.RegionCount());
+            detail::StepCounts(progress, 0, 100, first, goal.proxyCount, s.RegionCount(), s.RegionCount() + added,
+                               (1 + detail::kLloydItems * std::max(1, goal.relaxations)) * faces);
+            detail::AddRandomSeeds(metric, g, s, added, random);
             detail::Relax(mesh, metric, s, ws, std::max(1, goal.relaxations));  // floods from the new seeds first
-            detail::Progress(cb, s.RegionCount(), goal.proxyCount);
         }
+        progress.Done();
         return;
     }
+    progress.Step(0, 100, (2 + detail::kLloydItems * (1 + goal.relaxations)) * faces);
     detail::AddRandomSeeds(metric, g, s, goal.proxyCount - s.RegionCount(), random);
     FloodFromSeeds(mesh, metric, s, ws);
     MeasureRegions(metric, s);
     detail::Relax(mesh, metric, s, ws, goal.relaxations);
+    progress.Done();
 }
 
 /// Farthest seeding: starts from a random face per component, then adds one proxy at a time
@@ -292,17 +333,25 @@ void SeedFarthest(const IndexedMesh &mesh, const Metric &metric, const FaceGeome
                   const SeedingGoal &goal, SeedRandom &random, PartitionWorkspace<Metric> &ws,
                   CallBackPos *cb = nullptr)
 {
+    ProgressStage progress(cb, detail::kSeedingText);
     detail::StartOnePerComponent(mesh, metric, g, s, random);
     detail::RegionFaces faces;
     faces.Rebuild(s);
+    const int first = s.RegionCount();
     int nextRelaxation = 2 * s.RegionCount();
+    // Between two relaxations the insertions touch about every face, as a doubling round's do.
+    const auto step = [&] {
+        detail::StepCounts(progress, 0, 100, first, goal.proxyCount, s.RegionCount(), nextRelaxation,
+                           (detail::kRoundItems + detail::kLloydItems * goal.relaxations) * mesh.FaceCount());
+    };
+    step();
     bool flooded = false;
     const auto relax = [&](int iterations) {
         detail::Relax(mesh, metric, s, ws, iterations);
         faces.Rebuild(s);
         nextRelaxation = 2 * s.RegionCount();
         flooded = iterations > 0;
-        detail::Progress(cb, s.RegionCount(), goal.proxyCount);
+        step();
     };
     while (s.RegionCount() < goal.proxyCount) {
         if (goal.targetEnergy > 0 && s.Energy() <= goal.targetEnergy) {
@@ -316,6 +365,7 @@ void SeedFarthest(const IndexedMesh &mesh, const Metric &metric, const FaceGeome
         if (s.RegionCount() >= nextRelaxation && s.RegionCount() < goal.proxyCount) relax(goal.relaxations);
     }
     if (!flooded) relax(std::max(1, goal.relaxations));
+    progress.Done();
 }
 
 namespace detail {
@@ -324,15 +374,19 @@ namespace detail {
 /// relaxes. A round spreads its proxies over the regions in proportion to their energy, by
 /// D'Hondt's highest averages on the energies as they fall: each proxy goes to the region
 /// whose energy divided by one plus the proxies it already got this round is largest, at its
-/// worst face (as in farthest seeding).
+/// worst face (as in farthest seeding). The rounds take `progress` from `from` to `to`.
 template <class Graph, class Metric, class Neighbors>
 void DoublingRounds(const Graph &mesh, const Metric &metric, const FaceGeometry &g, RegionState &s,
-                    const SeedingGoal &goal, PartitionWorkspace<Metric, Neighbors> &ws, CallBackPos *cb)
+                    const SeedingGoal &goal, PartitionWorkspace<Metric, Neighbors> &ws, ProgressStage &progress,
+                    double from, double to)
 {
     RegionFaces faces;
+    const int first = s.RegionCount();
     while (s.RegionCount() < goal.proxyCount) {
         if (goal.targetEnergy > 0 && s.Energy() <= goal.targetEnergy) return;
         const int roundSize = std::min(s.RegionCount(), goal.proxyCount - s.RegionCount());
+        StepCounts(progress, from, to, first, goal.proxyCount, s.RegionCount(), s.RegionCount() + roundSize,
+                   (kRoundItems + kLloydItems * std::max(1, goal.relaxations)) * mesh.FaceCount());
         faces.Rebuild(s);
         std::vector<int> given(s.RegionCount(), 0);
         const auto share = [&](int r) { return s.regionEnergy[r] / (1 + given[r]); };
@@ -344,7 +398,6 @@ void DoublingRounds(const Graph &mesh, const Metric &metric, const FaceGeometry 
             given.push_back(0);
         }
         Relax(mesh, metric, s, ws, std::max(1, goal.relaxations));
-        Progress(cb, s.RegionCount(), goal.proxyCount);
     }
 }
 
@@ -374,12 +427,17 @@ Partition FloodPatches(const IndexedMesh &mesh, const Metric &metric, const Face
 /// Hierarchical seeding on patches of about `patchFaces` faces (FloodPatches), up to the
 /// goal's count or as many regions as the patches allow; then the regions are carried to the
 /// faces, refitted and relaxed once there. The rounds' floods and insertions thus touch
-/// patches, not faces.
+/// patches, not faces. Takes `progress` from 0 to the position it returns, where rounds on the
+/// faces (if the patches fell short of the goal) start.
 template <class Metric>
-void SeedOnPatches(const IndexedMesh &mesh, const Metric &metric, const FaceGeometry &g, RegionState &s,
-                   const SeedingGoal &goal, int patchFaces, SeedRandom &random, PartitionWorkspace<Metric> &ws,
-                   CallBackPos *cb)
+double SeedOnPatches(const IndexedMesh &mesh, const Metric &metric, const FaceGeometry &g, RegionState &s,
+                     const SeedingGoal &goal, int patchFaces, SeedRandom &random, PartitionWorkspace<Metric> &ws,
+                     ProgressStage &progress)
 {
+    // Positions: the patches and their graph, the rounds on them, then the faces, about as
+    // their shares of the time at 832k faces, k = 200.
+    constexpr double kPatchesEnd = 40, kRoundsEnd = 70, kShortOfGoalEnd = 85;
+    progress.Step(0, kPatchesEnd, kPatchItems * mesh.FaceCount());
     const PatchGraph<Metric> graph =
         BuildPatchGraph(mesh, metric, FloodPatches(mesh, metric, g, mesh.FaceCount() / patchFaces, random, ws));
     const PatchMetric<Metric> patchMetric(metric, graph, g.maxArea);
@@ -388,16 +446,23 @@ void SeedOnPatches(const IndexedMesh &mesh, const Metric &metric, const FaceGeom
     SeedingGoal coarseGoal = goal;
     coarseGoal.proxyCount = std::min(goal.proxyCount, graph.FaceCount() / kPatchesPerRegion);
     StartOnePerComponent(graph, patchMetric, graph.geometry, coarse, random);
-    DoublingRounds(graph, patchMetric, graph.geometry, coarse, coarseGoal, patchWs, cb);
+    DoublingRounds(graph, patchMetric, graph.geometry, coarse, coarseGoal, patchWs, progress, kPatchesEnd, kRoundsEnd);
 
+    const double end = coarseGoal.proxyCount < goal.proxyCount ? kShortOfGoalEnd : 100;
+    progress.Step(kRoundsEnd, end, kCarryItems * mesh.FaceCount());
     s.partition.proxies = coarse.partition.proxies;
     s.partition.faceRegion.resize(mesh.FaceCount());
-    for (int f = 0; f < mesh.FaceCount(); ++f) s.partition.faceRegion[f] = coarse.partition.faceRegion[graph.patchOf[f]];
+    ProgressCounter carried;
+    for (int f = 0; f < mesh.FaceCount(); ++f) {
+        s.partition.faceRegion[f] = coarse.partition.faceRegion[graph.patchOf[f]];
+        carried.Count();
+    }
     s.faceError.resize(mesh.FaceCount());
     s.seeds.assign(coarse.RegionCount(), -1);
     s.regionEnergy.assign(coarse.RegionCount(), 0);
     FitRegions(metric, s);
     LloydIteration(mesh, metric, s, ws);
+    return end;
 }
 
 }  // namespace detail
@@ -413,10 +478,13 @@ void SeedHierarchically(const IndexedMesh &mesh, const Metric &metric, const Fac
                         const SeedingGoal &goal, SeedRandom &random, PartitionWorkspace<Metric> &ws,
                         CallBackPos *cb = nullptr)
 {
+    ProgressStage progress(cb, detail::kSeedingText);
     const int patchFaces = detail::PatchFaces(mesh.FaceCount(), goal);
-    if (patchFaces > 1) detail::SeedOnPatches(mesh, metric, g, s, goal, patchFaces, random, ws, cb);
+    double roundsFrom = 0;
+    if (patchFaces > 1) roundsFrom = detail::SeedOnPatches(mesh, metric, g, s, goal, patchFaces, random, ws, progress);
     else detail::StartOnePerComponent(mesh, metric, g, s, random);
-    detail::DoublingRounds(mesh, metric, g, s, goal, ws, cb);
+    detail::DoublingRounds(mesh, metric, g, s, goal, ws, progress, roundsFrom, 100);
+    progress.Done();
 }
 
 /// Dispatches to the chosen seeding method.

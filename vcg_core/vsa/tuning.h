@@ -19,6 +19,11 @@ constexpr int kMultilevelFaces = 100000;  ///< seed on patches from this many fa
 constexpr int kMaxPatchFaces = 32;        ///< a coarse round then costs about 1/32 of one on the faces
 constexpr int kPatchesPerRegion = 16;     ///< enough patches that their borders and energies are close to the faces'
 constexpr int kMinPatchFaces = 4;         ///< smaller patches save too little to be worth a coarse level
+// Work per face or node, in progress items (ProgressTick), so that the bar moves evenly:
+constexpr double kLloydItems = 5;   ///< a Lloyd iteration: marking, flooding, reading out, fitting, measuring
+constexpr double kPatchItems = 10;  ///< flooding the patches and building their graph
+constexpr double kCarryItems = 8;   ///< carrying the patches' regions to the faces, fitting and relaxing once
+constexpr double kRoundItems = 8;   ///< a doubling round's insertions, which touch about every node a few times
 
 // Meshable partition (meshable_partition.h).
 constexpr double kFacingAwayShare = 0.01;  ///< a region faces away past this share of its area facing the input's back
