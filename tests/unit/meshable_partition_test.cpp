@@ -102,6 +102,52 @@ TEST(MeshablePartition, KPrimeStaysWithinItsCap)
     EXPECT_NE(r.meshable.Summary().find("still do not mesh as one planar polygon"), std::string::npos);
 }
 
+/// The trials relabel one surface round after round (AssignRegions keeps the cells that are
+/// still whole regions): every round's surface must be the one built from scratch. The rounds
+/// here are those of the meshable partition (splits), then labels that cut regions into many
+/// pieces, then the first labels again.
+TEST(MeshablePartition, RelabelledSurfaceIsTheSurfaceBuiltAfresh)
+{
+    TMesh box;
+    vsa_test::MakeBoxWithHole(box, 16);
+    ApproximationParam param;
+    param.proxyCount = 6;
+    Approximation approximation(BuildIndexedMesh(box), param);
+    approximation.Initialize();
+    approximation.Run(10);
+    const IndexedMesh &mesh = approximation.Mesh();
+    std::vector<std::vector<int>> rounds = {approximation.CurrentPartition().faceRegion};
+    for (int region : {0, 3, 6}) {
+        approximation.Split(region);
+        rounds.push_back(approximation.CurrentPartition().faceRegion);
+    }
+    std::vector<int> stripes(mesh.FaceCount());
+    for (int f = 0; f < mesh.FaceCount(); ++f) stripes[f] = (f / 7) % 5;
+    rounds.push_back(stripes);
+    rounds.push_back(rounds.front());
+
+    MeshingSurface relabelled;
+    std::string error;
+    ASSERT_TRUE(BuildSurfaceTopology(mesh, relabelled, error)) << error;
+    for (size_t round = 0; round < rounds.size(); ++round) {
+        const int regionCount = *std::max_element(rounds[round].begin(), rounds[round].end()) + 1;
+        MeshingSurface fresh;
+        ASSERT_TRUE(BuildMeshingSurface(mesh, rounds[round], regionCount, fresh, error)) << error;
+        ASSERT_TRUE(AssignRegions(relabelled, rounds[round], regionCount, error)) << error;
+        EXPECT_EQ(relabelled.faceRegion, fresh.faceRegion) << "round " << round;
+        EXPECT_EQ(relabelled.faceCell, fresh.faceCell) << "round " << round;
+        EXPECT_EQ(relabelled.cellRegion, fresh.cellRegion) << "round " << round;
+        EXPECT_EQ(relabelled.cellFaces, fresh.cellFaces) << "round " << round;
+        EXPECT_EQ(relabelled.cellLoop, fresh.cellLoop) << "round " << round;
+        EXPECT_EQ(relabelled.cellLoopOther, fresh.cellLoopOther) << "round " << round;
+        EXPECT_EQ(relabelled.cellCentroid, fresh.cellCentroid) << "round " << round;
+        EXPECT_EQ(relabelled.onBorder, fresh.onBorder) << "round " << round;
+        EXPECT_EQ(relabelled.junction, fresh.junction) << "round " << round;
+        EXPECT_EQ(relabelled.nonDiscRegions, fresh.nonDiscRegions) << "round " << round;
+        EXPECT_EQ(relabelled.regionCount, fresh.regionCount) << "round " << round;
+    }
+}
+
 /// An unwelded mesh (every face its own vertices, as STL files have them) is refused with the
 /// hint to weld it first.
 TEST(MeshablePartition, TriangleSoupIsRefusedWithTheWeldHint)

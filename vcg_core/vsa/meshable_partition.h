@@ -92,24 +92,36 @@ struct RegionTrial
     std::vector<double> facingAway;  ///< per region, the share of its triangles' area that faces away
 };
 
-/// The input as the trial meshings need it, built once: a grid of its faces and their normals.
-struct InputSurface
+/// What every round's trial meshing shares, set up once: the meshing surface, whose regions and
+/// cells alone change from round to round (see AssignRegions), the grids of the gap test and of
+/// the input's own intersections, and the input's faces in a grid with their normals.
+struct TrialSetup
 {
-    explicit InputSurface(const IndexedMesh &in) : grid(in.positions, in.faces), normal(in.FaceCount())
+    TrialSetup(const IndexedMesh &in, const MeshingParam &meshing)
+        : grid(in.positions, in.faces), normal(in.FaceCount()), intersections(in),
+          gapTest(surface.positions, surface.faces, meshing.chordGapThreshold)
     {
         for (int f = 0; f < in.FaceCount(); ++f) {
             const auto &t = in.faces[f];
             normal[f] = (in.positions[t[1]] - in.positions[t[0]]) ^ (in.positions[t[2]] - in.positions[t[0]]);
         }
+        std::string error;
+        meshable = BuildSurfaceTopology(in, surface, error);
     }
+    TrialSetup(const TrialSetup &) = delete;  // gapTest refers to surface
+
     SurfaceGrid grid;
     std::vector<Point3d> normal;  ///< per input face, not normalized
+    InputIntersections intersections;
+    MeshingSurface surface;  ///< with the regions of the latest trial
+    bool meshable = false;   ///< false: the meshing refuses the input, and says why
+    ChordGapTest gapTest;    ///< on surface's faces
 };
 
 /// Per region, the share of its triangles' area whose nearest input face points the other way
 /// (what shades dark where the input does not), from four samples per triangle; and for a
 /// region with some, its input face nearest to the farthest such sample, to split it there.
-inline void MeasureFacingAway(const MeshingSurface &s, const MeshingPass &pass, const InputSurface &input,
+inline void MeasureFacingAway(const MeshingSurface &s, const MeshingPass &pass, const TrialSetup &input,
                               RegionTrial &trial)
 {
     const int regionCount = int(trial.fault.size());
@@ -241,7 +253,7 @@ inline void ChooseSplitFaces(const MeshingSurface &s, const MeshingPass &pass, c
 /// side, within the stray bound of its input, meeting no other region's triangles (unless the
 /// input meets itself there). Regions pass when the surface cannot be built: the meshing says why.
 template <class CoordType>
-RegionTrial TrialMeshRegions(const IndexedMesh &in, const InputSurface &input, const Partition &partition,
+RegionTrial TrialMeshRegions(const IndexedMesh &in, TrialSetup &input, const Partition &partition,
                              const std::vector<int> &seeds, const MeshingParam &meshing,
                              const MeshablePartitionParam &param)
 {
@@ -251,17 +263,17 @@ RegionTrial TrialMeshRegions(const IndexedMesh &in, const InputSurface &input, c
     trial.stray.assign(regionCount, 0);
     trial.splitFace.assign(regionCount, -1);
     trial.facingAway.assign(regionCount, 0);
-    MeshingSurface s;
+    if (!input.meshable) return trial;
+    MeshingSurface &s = input.surface;
     std::string error;
-    if (!BuildMeshingSurface(in, partition.faceRegion, regionCount, s, error)) return trial;
+    if (!AssignRegions(s, partition.faceRegion, regionCount, error)) return trial;
     const std::vector<Proxy> proxies = UsableProxies(s, partition.proxies);
     MeshingParam once = meshing;
     once.repairRounds = once.halvingRounds = 0;
-    ChordGapTest gapTest(s.positions, s.faces, once.chordGapThreshold);
-    InputIntersections inputIntersections(in);
     int passes = 0;
     CellMesher<CoordType> mesher(s, proxies, ChordDeviationBound(s, proxies, once.chordErrorFactor), once, 0,
-                                 once.chordGapThreshold > 0 ? &gapTest : nullptr, inputIntersections, passes, nullptr);
+                                 once.chordGapThreshold > 0 ? &input.gapTest : nullptr, input.intersections, passes,
+                                 nullptr);
     mesher.Repair();
     const MeshingPass &pass = mesher.Best().pass;
     const PassDefects defects = FindDefects(pass, 0);
@@ -282,7 +294,7 @@ RegionTrial TrialMeshRegions(const IndexedMesh &in, const InputSurface &input, c
     for (const PassDefects::Crossing &crossing : defects.crossings) flag(s.cellRegion[crossing.cell], RegionFault::Folds);
     std::vector<char> meeting(s.CellCount(), 0);
     for (const auto &[f, g] : defects.intersections) meeting[pass.triangleCell[f]] = meeting[pass.triangleCell[g]] = 1;
-    const std::vector<char> inputMeets = inputIntersections.CellsAmong(s, meeting);
+    const std::vector<char> inputMeets = input.intersections.CellsAmong(s, meeting);
     for (int c = 0; c < s.CellCount(); ++c)
         if (meeting[c] && !inputMeets[c]) flag(s.cellRegion[c], RegionFault::Intersects);
     ChooseSplitFaces(s, pass, seeds, in, trial);
@@ -317,7 +329,7 @@ MeshablePartitionReport MakePartitionMeshable(Approximation &approximation, cons
     report.proxiesRequested = report.proxiesFinal = approximation.ProxyCount();
     if (!param.enabled) return report;
     const int cap = std::max(report.proxiesRequested + 1, int(param.maxProxyFactor * report.proxiesRequested));
-    const detail::InputSurface input(approximation.Mesh());
+    detail::TrialSetup input(approximation.Mesh(), meshing);
     for (int round = 0;; ++round) {
         if (cb) cb(100 * round / (param.maxRounds + 1), "VSA: splitting regions that do not mesh as one polygon");
         const detail::RegionTrial trial = detail::TrialMeshRegions<CoordType>(
