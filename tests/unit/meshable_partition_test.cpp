@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <memory>
 #include <random>
 #include <string>
 #include <vector>
@@ -26,6 +27,19 @@ ShapeApproximationResult Approximate(const TMesh &in, TMesh &out, int k, bool me
     param.meshable.enabled = meshable;
     param.meshable.maxProxyFactor = maxProxyFactor;
     return ApproximateShape(in, out, param);
+}
+
+/// MakeBoxWithHole(16) partitioned into k regions by 10 Lloyd iterations.
+std::unique_ptr<Approximation> PartitionedBoxWithHole(int k)
+{
+    TMesh box;
+    vsa_test::MakeBoxWithHole(box, 16);
+    ApproximationParam param;
+    param.proxyCount = k;
+    auto approximation = std::make_unique<Approximation>(BuildIndexedMesh(box), param);
+    approximation->Initialize();
+    approximation->Run(10);
+    return approximation;
 }
 
 TEST(MeshablePartition, CubeKeepsItsSixSidesAndK)
@@ -108,13 +122,8 @@ TEST(MeshablePartition, KPrimeStaysWithinItsCap)
 /// pieces, then the first labels again.
 TEST(MeshablePartition, RelabelledSurfaceIsTheSurfaceBuiltAfresh)
 {
-    TMesh box;
-    vsa_test::MakeBoxWithHole(box, 16);
-    ApproximationParam param;
-    param.proxyCount = 6;
-    Approximation approximation(BuildIndexedMesh(box), param);
-    approximation.Initialize();
-    approximation.Run(10);
+    const std::unique_ptr<Approximation> box = PartitionedBoxWithHole(6);
+    Approximation &approximation = *box;
     const IndexedMesh &mesh = approximation.Mesh();
     std::vector<std::vector<int>> rounds = {approximation.CurrentPartition().faceRegion};
     for (int region : {0, 3, 6}) {
@@ -145,6 +154,33 @@ TEST(MeshablePartition, RelabelledSurfaceIsTheSurfaceBuiltAfresh)
         EXPECT_EQ(relabelled.junction, fresh.junction) << "round " << round;
         EXPECT_EQ(relabelled.nonDiscRegions, fresh.nonDiscRegions) << "round " << round;
         EXPECT_EQ(relabelled.regionCount, fresh.regionCount) << "round " << round;
+    }
+}
+
+/// Each trial borrows the flooding of the one before and relabels a surface set up once: round
+/// after round, its verdicts must be those of a trial set up afresh on the same partition.
+TEST(MeshablePartition, TrialsInTurnJudgeAsTrialsAfresh)
+{
+    const std::unique_ptr<Approximation> box = PartitionedBoxWithHole(4);
+    Approximation &approximation = *box;
+    const MeshingParam meshing;
+    const MeshablePartitionParam meshable;
+    detail::TrialSetup<vcg::Point3f> inTurn(approximation.Mesh(), meshing);
+    for (int round = 0; round < 4; ++round) {
+        const Partition &partition = approximation.CurrentPartition();
+        const detail::RegionTrial a = detail::TrialMeshRegions<vcg::Point3f>(approximation.Mesh(), inTurn, partition,
+                                                                      approximation.SeedFaces(), meshable);
+        detail::TrialSetup<vcg::Point3f> afresh(approximation.Mesh(), meshing);
+        const detail::RegionTrial b = detail::TrialMeshRegions<vcg::Point3f>(approximation.Mesh(), afresh, partition,
+                                                                      approximation.SeedFaces(), meshable);
+        EXPECT_EQ(a.fault, b.fault) << "round " << round;
+        EXPECT_EQ(a.facingAway, b.facingAway) << "round " << round;
+        EXPECT_EQ(a.splitFace, b.splitFace) << "round " << round;
+        EXPECT_EQ(inTurn.latest->Best().pass.positions, afresh.latest->Best().pass.positions) << "round " << round;
+        EXPECT_EQ(inTurn.latest->Best().pass.triangles, afresh.latest->Best().pass.triangles) << "round " << round;
+        const std::vector<int> regions = detail::RegionsToSplit(a, partition);
+        ASSERT_FALSE(regions.empty()) << "round " << round;  // the box's rings need splits
+        approximation.Split(regions.front(), a.splitFace[regions.front()]);
     }
 }
 
