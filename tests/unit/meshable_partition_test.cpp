@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <memory>
 #include <random>
 #include <string>
 #include <vector>
@@ -26,6 +27,19 @@ ShapeApproximationResult Approximate(const TMesh &in, TMesh &out, int k, bool me
     param.meshable.enabled = meshable;
     param.meshable.maxProxyFactor = maxProxyFactor;
     return ApproximateShape(in, out, param);
+}
+
+/// MakeBoxWithHole(16) partitioned into k regions by 10 Lloyd iterations.
+std::unique_ptr<Approximation> PartitionedBoxWithHole(int k)
+{
+    TMesh box;
+    vsa_test::MakeBoxWithHole(box, 16);
+    ApproximationParam param;
+    param.proxyCount = k;
+    auto approximation = std::make_unique<Approximation>(BuildIndexedMesh(box), param);
+    approximation->Initialize();
+    approximation->Run(10);
+    return approximation;
 }
 
 TEST(MeshablePartition, CubeKeepsItsSixSidesAndK)
@@ -100,6 +114,74 @@ TEST(MeshablePartition, KPrimeStaysWithinItsCap)
     EXPECT_TRUE(r.meshing.validity.IsValid()) << r.meshing.validity.Summary();
     EXPECT_GT(r.meshable.regionsLeft, 0);
     EXPECT_NE(r.meshable.Summary().find("still do not mesh as one planar polygon"), std::string::npos);
+}
+
+/// The trials relabel one surface round after round (AssignRegions keeps the cells that are
+/// still whole regions): every round's surface must be the one built from scratch. The rounds
+/// here are those of the meshable partition (splits), then labels that cut regions into many
+/// pieces, then the first labels again.
+TEST(MeshablePartition, RelabelledSurfaceIsTheSurfaceBuiltAfresh)
+{
+    const std::unique_ptr<Approximation> box = PartitionedBoxWithHole(6);
+    Approximation &approximation = *box;
+    const IndexedMesh &mesh = approximation.Mesh();
+    std::vector<std::vector<int>> rounds = {approximation.CurrentPartition().faceRegion};
+    for (int region : {0, 3, 6}) {
+        approximation.Split(region);
+        rounds.push_back(approximation.CurrentPartition().faceRegion);
+    }
+    std::vector<int> stripes(mesh.FaceCount());
+    for (int f = 0; f < mesh.FaceCount(); ++f) stripes[f] = (f / 7) % 5;
+    rounds.push_back(stripes);
+    rounds.push_back(rounds.front());
+
+    MeshingSurface relabelled;
+    std::string error;
+    ASSERT_TRUE(BuildSurfaceTopology(mesh, relabelled, error)) << error;
+    for (size_t round = 0; round < rounds.size(); ++round) {
+        const int regionCount = *std::max_element(rounds[round].begin(), rounds[round].end()) + 1;
+        MeshingSurface fresh;
+        ASSERT_TRUE(BuildMeshingSurface(mesh, rounds[round], regionCount, fresh, error)) << error;
+        ASSERT_TRUE(AssignRegions(relabelled, rounds[round], regionCount, error)) << error;
+        EXPECT_EQ(relabelled.faceRegion, fresh.faceRegion) << "round " << round;
+        EXPECT_EQ(relabelled.faceCell, fresh.faceCell) << "round " << round;
+        EXPECT_EQ(relabelled.cellRegion, fresh.cellRegion) << "round " << round;
+        EXPECT_EQ(relabelled.cellFaces, fresh.cellFaces) << "round " << round;
+        EXPECT_EQ(relabelled.cellLoop, fresh.cellLoop) << "round " << round;
+        EXPECT_EQ(relabelled.cellLoopOther, fresh.cellLoopOther) << "round " << round;
+        EXPECT_EQ(relabelled.cellCentroid, fresh.cellCentroid) << "round " << round;
+        EXPECT_EQ(relabelled.onBorder, fresh.onBorder) << "round " << round;
+        EXPECT_EQ(relabelled.junction, fresh.junction) << "round " << round;
+        EXPECT_EQ(relabelled.nonDiscRegions, fresh.nonDiscRegions) << "round " << round;
+        EXPECT_EQ(relabelled.regionCount, fresh.regionCount) << "round " << round;
+    }
+}
+
+/// Each trial borrows the flooding of the one before and relabels a surface set up once: round
+/// after round, its verdicts must be those of a trial set up afresh on the same partition.
+TEST(MeshablePartition, TrialsInTurnJudgeAsTrialsAfresh)
+{
+    const std::unique_ptr<Approximation> box = PartitionedBoxWithHole(4);
+    Approximation &approximation = *box;
+    const MeshingParam meshing;
+    const MeshablePartitionParam meshable;
+    detail::TrialSetup<vcg::Point3f> inTurn(approximation.Mesh(), meshing);
+    for (int round = 0; round < 4; ++round) {
+        const Partition &partition = approximation.CurrentPartition();
+        const detail::RegionTrial a = detail::TrialMeshRegions<vcg::Point3f>(approximation.Mesh(), inTurn, partition,
+                                                                      approximation.SeedFaces(), meshable);
+        detail::TrialSetup<vcg::Point3f> afresh(approximation.Mesh(), meshing);
+        const detail::RegionTrial b = detail::TrialMeshRegions<vcg::Point3f>(approximation.Mesh(), afresh, partition,
+                                                                      approximation.SeedFaces(), meshable);
+        EXPECT_EQ(a.fault, b.fault) << "round " << round;
+        EXPECT_EQ(a.facingAway, b.facingAway) << "round " << round;
+        EXPECT_EQ(a.splitFace, b.splitFace) << "round " << round;
+        EXPECT_EQ(inTurn.latest->Best().pass.positions, afresh.latest->Best().pass.positions) << "round " << round;
+        EXPECT_EQ(inTurn.latest->Best().pass.triangles, afresh.latest->Best().pass.triangles) << "round " << round;
+        const std::vector<int> regions = detail::RegionsToSplit(a, partition);
+        ASSERT_FALSE(regions.empty()) << "round " << round;  // the box's rings need splits
+        approximation.Split(regions.front(), a.splitFace[regions.front()]);
+    }
 }
 
 /// An unwelded mesh (every face its own vertices, as STL files have them) is refused with the

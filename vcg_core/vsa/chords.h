@@ -98,8 +98,10 @@ inline double ChainAngleWeight(const MeshingSurface &s, const std::vector<Proxy>
 class ChordGapTest
 {
 public:
-    ChordGapTest(const std::vector<Point3d> &positions, const std::vector<std::array<int, 3>> &faces, double threshold)
-        : positions_(positions), faces_(faces), threshold_(threshold)
+    /// `grid`: a SurfaceGrid of these faces to borrow, or nullptr to build one when needed.
+    ChordGapTest(const std::vector<Point3d> &positions, const std::vector<std::array<int, 3>> &faces, double threshold,
+                 const SurfaceGrid *grid = nullptr)
+        : positions_(positions), faces_(faces), threshold_(threshold), borrowed_(grid)
     {
     }
 
@@ -110,9 +112,10 @@ public:
         // The chain runs from a to b within chainDeviation of the chord, so every point of the
         // chord has a chain point, on the surface, at most that far: no query needed.
         if (!(chainDeviation > allowed)) return false;
-        if (!surface_) surface_ = std::make_unique<SurfaceGrid>(positions_, faces_);  // most meshings never get here
+        if (!borrowed_ && !surface_) surface_ = std::make_unique<SurfaceGrid>(positions_, faces_);  // most meshings never get here
+        const SurfaceGrid &grid = borrowed_ ? *borrowed_ : *surface_;
         for (int i = 1; i < kChordGapSamples; ++i)
-            if (!surface_->HasFaceWithin(a + (b - a) * (double(i) / kChordGapSamples), allowed)) return true;
+            if (!grid.HasFaceWithin(a + (b - a) * (double(i) / kChordGapSamples), allowed)) return true;
         return false;
     }
 
@@ -120,6 +123,7 @@ private:
     const std::vector<Point3d> &positions_;
     const std::vector<std::array<int, 3>> &faces_;
     double threshold_;
+    const SurfaceGrid *borrowed_ = nullptr;
     std::unique_ptr<SurfaceGrid> surface_;
 };
 

@@ -13,6 +13,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <memory>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -92,25 +93,51 @@ struct RegionTrial
     std::vector<double> facingAway;  ///< per region, the share of its triangles' area that faces away
 };
 
-/// The input as the trial meshings need it, built once: a grid of its faces and their normals.
-struct InputSurface
+/// What every round's trial meshing shares, set up once: the meshing surface, whose regions and
+/// cells alone change from round to round (see AssignRegions), its faces in a grid with their
+/// normals (for the facing-away and the gap tests), and the input's own intersections. The
+/// latest trial's mesher is kept to lend its flooding to the next: a cell that the splits did
+/// not change keeps its colours (see CellFlooding). It refers to its own surface, so there are
+/// two, relabelled in turn.
+template <class CoordType>
+struct TrialSetup
 {
-    explicit InputSurface(const IndexedMesh &in) : grid(in.positions, in.faces), normal(in.FaceCount())
+    TrialSetup(const IndexedMesh &in, const MeshingParam &meshing) : intersections(in), once(meshing)
     {
-        for (int f = 0; f < in.FaceCount(); ++f) {
-            const auto &t = in.faces[f];
-            normal[f] = (in.positions[t[1]] - in.positions[t[0]]) ^ (in.positions[t[2]] - in.positions[t[0]]);
+        once.repairRounds = once.halvingRounds = 0;
+        std::string error;
+        meshable = BuildSurfaceTopology(in, surfaces[0], error);
+        if (!meshable) return;
+        surfaces[1] = surfaces[0];
+        const MeshingSurface &s = surfaces[0];
+        grid = std::make_unique<SurfaceGrid>(s.positions, s.faces);
+        gapTest = std::make_unique<ChordGapTest>(s.positions, s.faces, once.chordGapThreshold, grid.get());
+        normal.resize(s.FaceCount());
+        for (int f = 0; f < s.FaceCount(); ++f) {
+            const auto &t = s.faces[f];
+            normal[f] = (s.positions[t[1]] - s.positions[t[0]]) ^ (s.positions[t[2]] - s.positions[t[0]]);
         }
     }
-    SurfaceGrid grid;
-    std::vector<Point3d> normal;  ///< per input face, not normalized
+    TrialSetup(const TrialSetup &) = delete;  // grid, gapTest and latest refer to the surfaces
+
+    InputIntersections intersections;
+    MeshingParam once;  ///< the meshing's, without repairs
+    std::array<MeshingSurface, 2> surfaces;
+    bool meshable = false;  ///< false: the meshing refuses the input, and says why
+    std::unique_ptr<SurfaceGrid> grid;     ///< of the surfaces' faces (the same in both)
+    std::unique_ptr<ChordGapTest> gapTest;
+    std::vector<Point3d> normal;  ///< per surface face, not normalized
+    std::array<std::vector<Proxy>, 2> proxies;  ///< UsableProxies of each surface's regions
+    std::unique_ptr<CellMesher<CoordType>> latest;
+    int latestSurface = 1;  ///< the surface `latest` meshed, which the next trial leaves alone
+    int passes = 0;
 };
 
-/// Per region, the share of its triangles' area whose nearest input face points the other way
-/// (what shades dark where the input does not), from four samples per triangle; and for a
-/// region with some, its input face nearest to the farthest such sample, to split it there.
-inline void MeasureFacingAway(const MeshingSurface &s, const MeshingPass &pass, const InputSurface &input,
-                              RegionTrial &trial)
+/// Per region, the share of its triangles' area whose nearest input face (in `grid`, with its
+/// `normal`) points the other way (what shades dark where the input does not), from four
+/// samples per triangle.
+inline void MeasureFacingAway(const MeshingSurface &s, const MeshingPass &pass, const SurfaceGrid &grid,
+                              const std::vector<Point3d> &normal, RegionTrial &trial)
 {
     const int regionCount = int(trial.fault.size());
     std::vector<double> area(regionCount, 0), away(regionCount, 0);
@@ -121,8 +148,8 @@ inline void MeasureFacingAway(const MeshingSurface &s, const MeshingPass &pass, 
         const Point3d n = (b - a) ^ (c - a);
         area[r] += n.Norm();
         for (const Point3d &p : {(a + b + c) / 3.0, (a * 4 + b + c) / 6.0, (a + b * 4 + c) / 6.0, (a + b + c * 4) / 6.0}) {
-            const int nearest = input.grid.NearestFace(p);
-            if (nearest >= 0 && input.normal[nearest] * n < 0) away[r] += n.Norm() / 4;
+            const int nearest = grid.NearestFace(p);
+            if (nearest >= 0 && normal[nearest] * n < 0) away[r] += n.Norm() / 4;
         }
     }
     for (int r = 0; r < regionCount; ++r) trial.facingAway[r] = area[r] > 0 ? away[r] / area[r] : 0;
@@ -241,9 +268,8 @@ inline void ChooseSplitFaces(const MeshingSurface &s, const MeshingPass &pass, c
 /// side, within the stray bound of its input, meeting no other region's triangles (unless the
 /// input meets itself there). Regions pass when the surface cannot be built: the meshing says why.
 template <class CoordType>
-RegionTrial TrialMeshRegions(const IndexedMesh &in, const InputSurface &input, const Partition &partition,
-                             const std::vector<int> &seeds, const MeshingParam &meshing,
-                             const MeshablePartitionParam &param)
+RegionTrial TrialMeshRegions(const IndexedMesh &in, TrialSetup<CoordType> &input, const Partition &partition,
+                             const std::vector<int> &seeds, const MeshablePartitionParam &param)
 {
     const int regionCount = int(partition.proxies.size());
     RegionTrial trial;
@@ -251,19 +277,20 @@ RegionTrial TrialMeshRegions(const IndexedMesh &in, const InputSurface &input, c
     trial.stray.assign(regionCount, 0);
     trial.splitFace.assign(regionCount, -1);
     trial.facingAway.assign(regionCount, 0);
-    MeshingSurface s;
+    if (!input.meshable) return trial;
+    const int slot = 1 - input.latestSurface;
+    MeshingSurface &s = input.surfaces[slot];
     std::string error;
-    if (!BuildMeshingSurface(in, partition.faceRegion, regionCount, s, error)) return trial;
-    const std::vector<Proxy> proxies = UsableProxies(s, partition.proxies);
-    MeshingParam once = meshing;
-    once.repairRounds = once.halvingRounds = 0;
-    ChordGapTest gapTest(s.positions, s.faces, once.chordGapThreshold);
-    InputIntersections inputIntersections(in);
-    int passes = 0;
-    CellMesher<CoordType> mesher(s, proxies, ChordDeviationBound(s, proxies, once.chordErrorFactor), once, 0,
-                                 once.chordGapThreshold > 0 ? &gapTest : nullptr, inputIntersections, passes, nullptr);
-    mesher.Repair();
-    const MeshingPass &pass = mesher.Best().pass;
+    if (!AssignRegions(s, partition.faceRegion, regionCount, error)) return trial;
+    const std::vector<Proxy> &proxies = input.proxies[slot] = UsableProxies(s, partition.proxies);
+    const MeshingParam &once = input.once;
+    input.latest = std::make_unique<CellMesher<CoordType>>(
+        s, proxies, ChordDeviationBound(s, proxies, once.chordErrorFactor), once, 0,
+        once.chordGapThreshold > 0 ? input.gapTest.get() : nullptr, input.intersections, input.passes, nullptr,
+        input.latest.get());
+    input.latestSurface = slot;
+    input.latest->Repair();
+    const MeshingPass &pass = input.latest->Best().pass;
     const PassDefects defects = FindDefects(pass, 0);
 
     auto flag = [&](int region, RegionFault fault) { trial.fault[region] = std::max(trial.fault[region], fault); };
@@ -276,13 +303,13 @@ RegionTrial TrialMeshRegions(const IndexedMesh &in, const InputSurface &input, c
     for (int r : s.cellRegion) ++cells[r];
     for (int r = 0; r < regionCount; ++r)
         if (cells[r] > 1) flag(r, RegionFault::NotDisc);
-    MeasureFacingAway(s, pass, input, trial);
+    MeasureFacingAway(s, pass, *input.grid, input.normal, trial);
     for (int r = 0; r < regionCount; ++r)
         if (trial.facingAway[r] > kFacingAwayShare) flag(r, RegionFault::FacesAway);
     for (const PassDefects::Crossing &crossing : defects.crossings) flag(s.cellRegion[crossing.cell], RegionFault::Folds);
     std::vector<char> meeting(s.CellCount(), 0);
     for (const auto &[f, g] : defects.intersections) meeting[pass.triangleCell[f]] = meeting[pass.triangleCell[g]] = 1;
-    const std::vector<char> inputMeets = inputIntersections.CellsAmong(s, meeting);
+    const std::vector<char> inputMeets = input.intersections.CellsAmong(s, meeting);
     for (int c = 0; c < s.CellCount(); ++c)
         if (meeting[c] && !inputMeets[c]) flag(s.cellRegion[c], RegionFault::Intersects);
     ChooseSplitFaces(s, pass, seeds, in, trial);
@@ -317,11 +344,11 @@ MeshablePartitionReport MakePartitionMeshable(Approximation &approximation, cons
     report.proxiesRequested = report.proxiesFinal = approximation.ProxyCount();
     if (!param.enabled) return report;
     const int cap = std::max(report.proxiesRequested + 1, int(param.maxProxyFactor * report.proxiesRequested));
-    const detail::InputSurface input(approximation.Mesh());
+    detail::TrialSetup<CoordType> input(approximation.Mesh(), meshing);
     for (int round = 0;; ++round) {
         if (cb) cb(100 * round / (param.maxRounds + 1), "VSA: splitting regions that do not mesh as one polygon");
         const detail::RegionTrial trial = detail::TrialMeshRegions<CoordType>(
-            approximation.Mesh(), input, approximation.CurrentPartition(), approximation.SeedFaces(), meshing, param);
+            approximation.Mesh(), input, approximation.CurrentPartition(), approximation.SeedFaces(), param);
         const std::vector<int> regions = detail::RegionsToSplit(trial, approximation.CurrentPartition());
         const int room = std::min(int(regions.size()), cap - approximation.ProxyCount());
         if (regions.empty() || round == param.maxRounds || room <= 0) {

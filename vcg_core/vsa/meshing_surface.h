@@ -456,18 +456,18 @@ inline std::string MeshingRefusal(const IndexedMesh &im, const MeshDiagnostics &
     return MeshingRefusal(diag);
 }
 
-/// Builds the surface the meshing stage walks, or returns false with the reason in `error`.
+/// Builds the part of the meshing surface that does not depend on the partition: its faces,
+/// their links and the vertices split per fan, with regions and cells still empty (see
+/// AssignRegions); or returns false with the reason in `error`.
 ///
 /// Accepted input: finite coordinates; every edge shared by at most two faces, walked in
 /// opposite directions by them (an edge-manifold, consistently oriented mesh, possibly open,
 /// possibly with several components). Faces with a repeated vertex are ignored (they have no
 /// area); vertices where several fans of faces meet are split per fan, so such a vertex
 /// becomes several output vertices at the same place.
-inline bool BuildMeshingSurface(const IndexedMesh &im, const std::vector<int> &faceRegion, int regionCount,
-                                MeshingSurface &s, std::string &error)
+inline bool BuildSurfaceTopology(const IndexedMesh &im, MeshingSurface &s, std::string &error)
 {
     s = MeshingSurface();
-    s.regionCount = regionCount;
     for (const Point3d &p : im.positions)
         if (!IsFinite(p)) {
             error = "the mesh has vertices with NaN or infinite coordinates";
@@ -483,7 +483,6 @@ inline bool BuildMeshingSurface(const IndexedMesh &im, const std::vector<int> &f
         }
         kept.faces.push_back(t);
         s.sourceFace.push_back(f);
-        s.faceRegion.push_back(faceRegion[f]);
     }
     if (kept.faces.empty()) {
         error = "the mesh has no faces with three distinct vertices";
@@ -506,9 +505,29 @@ inline bool BuildMeshingSurface(const IndexedMesh &im, const std::vector<int> &f
         for (int v : t) vertexOfCorner.push_back(v);
     detail::BuildOffsets(vertexOfCorner, s.VertexCount(), s.vertexFaceOffset, s.vertexFaces);
     for (int &corner : s.vertexFaces) corner /= 3;  // corner index -> face index
+    return true;
+}
 
+/// Labels the faces of a surface from BuildSurfaceTopology with their regions (`faceRegion` per
+/// IndexedMesh face) and cuts the regions into disc cells; false with the reason in `error` if
+/// the cells do not trace. A surface labelled before keeps, as they were, the cells that are
+/// still whole regions (see BuildCells): the trials of the meshable partition relabel one
+/// surface round after round, and most regions do not change.
+inline bool AssignRegions(MeshingSurface &s, const std::vector<int> &faceRegion, int regionCount, std::string &error)
+{
+    s.regionCount = regionCount;
+    s.faceRegion.resize(s.FaceCount());
+    for (int f = 0; f < s.FaceCount(); ++f) s.faceRegion[f] = faceRegion[s.sourceFace[f]];
     s.facePiece.assign(s.FaceCount(), 0);
     return detail::BuildCellsAndLoops(s, error);
+}
+
+/// Builds the surface the meshing stage walks (BuildSurfaceTopology, then AssignRegions), or
+/// returns false with the reason in `error`.
+inline bool BuildMeshingSurface(const IndexedMesh &im, const std::vector<int> &faceRegion, int regionCount,
+                                MeshingSurface &s, std::string &error)
+{
+    return BuildSurfaceTopology(im, s, error) && AssignRegions(s, faceRegion, regionCount, error);
 }
 
 }  // namespace vsa
