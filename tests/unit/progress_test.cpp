@@ -4,6 +4,7 @@
 #include "partition_test_helpers.h"
 
 #include <vsa/approximate_shape.h>
+#include <vsa/meshable_partition.h>
 #include <vsa/parallel.h>
 #include <vsa/progress.h>
 
@@ -212,4 +213,34 @@ TEST(Progress, ApproximateShapeReportsSetupSeedingAndIterationsInOrder)
     }
     EXPECT_EQ(stage, 2u);
     EXPECT_EQ(last, 70);
+}
+
+/// The meshable split reports from within its trials, not only between rounds, and reporting
+/// changes neither the splits nor the partition.
+TEST(Progress, MeshableSplitReportsWithinItsTrials)
+{
+    const auto split = [](vcg::CallBackPos *cb, MeshablePartitionReport &report) {
+        ApproximationParam param;
+        param.proxyCount = 20;
+        Approximation approximation(vsa_test::LoadCgalMesh("armadillo.off"), param);
+        approximation.Initialize();
+        approximation.Run(10);
+        report = MakePartitionMeshable<vcg::Point3f>(approximation, MeshingParam(), MeshablePartitionParam(), cb);
+        return Fingerprint(approximation.Result());
+    };
+    MeshablePartitionReport quietReport, report;
+    const std::string quiet = split(nullptr, quietReport);
+    std::string reported;
+    {
+        EveryTick everyTick;
+        reported = split(&Record, report);
+    }
+    EXPECT_TRUE(reported == quiet);
+    EXPECT_EQ(report.proxiesFinal, quietReport.proxiesFinal);
+    ASSERT_GT(report.rounds, 0);
+    EXPECT_TRUE(Monotonic(reports));
+    // Each trial cuts, floods and triangulates every face: a report per 4096 faces at least.
+    const size_t faces = vsa_test::LoadCgalMesh("armadillo.off").FaceCount();
+    EXPECT_GE(reports.size(), size_t(report.rounds + 1) * (faces / kProgressItems));
+    for (const Report &r : reports) EXPECT_EQ(r.text, "VSA: splitting regions that do not mesh as one polygon");
 }

@@ -344,9 +344,14 @@ MeshablePartitionReport MakePartitionMeshable(Approximation &approximation, cons
     report.proxiesRequested = report.proxiesFinal = approximation.ProxyCount();
     if (!param.enabled) return report;
     const int cap = std::max(report.proxiesRequested + 1, int(param.maxProxyFactor * report.proxiesRequested));
+    ProgressStage progress(cb, "VSA: splitting regions that do not mesh as one polygon");
+    const double faces = approximation.Mesh().FaceCount();
+    progress.Step(0, detail::kTrialSetupEnd, detail::kTrialSetupItems * faces);
     detail::TrialSetup<CoordType> input(approximation.Mesh(), meshing);
     for (int round = 0;; ++round) {
-        if (cb) cb(100 * round / (param.maxRounds + 1), "VSA: splitting regions that do not mesh as one polygon");
+        const double share = (100 - detail::kTrialSetupEnd) / (param.maxRounds + 1);
+        progress.Step(detail::kTrialSetupEnd + share * round, detail::kTrialSetupEnd + share * (round + 1),
+                      detail::kTrialItems * faces);
         const detail::RegionTrial trial = detail::TrialMeshRegions<CoordType>(
             approximation.Mesh(), input, approximation.CurrentPartition(), approximation.SeedFaces(), param);
         const std::vector<int> regions = detail::RegionsToSplit(trial, approximation.CurrentPartition());
@@ -366,6 +371,7 @@ MeshablePartitionReport MakePartitionMeshable(Approximation &approximation, cons
         ++report.rounds;
     }
     report.proxiesFinal = approximation.ProxyCount();
+    progress.Done();
     return report;
 }
 

@@ -194,7 +194,9 @@ MeshingPass RunMeshingPass(const MeshingSurface &s, const std::vector<Proxy> &pr
     // Then the cells kept as input faces: the others must triangulate around their edges too.
     for (int c = 0; c < s.CellCount(); ++c)
         if (inputCells[c]) KeepInputFaces<CoordType>(s, c, registry, pass);
+    ProgressCounter progress;
     for (int c = 0; c < s.CellCount(); ++c) {
+        progress.Count(s.cellFaceOffset[c + 1] - s.cellFaceOffset[c]);
         if (inputCells[c]) continue;
         std::vector<std::array<int, 3>> triangles = ReusableTriangles(previous, pass, c, registry);
         if (!triangles.empty()) {

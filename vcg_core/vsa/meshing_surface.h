@@ -95,7 +95,9 @@ inline void SplitVerticesPerFan(MeshingSurface &s)
     std::vector<int> fanVertex(size_t(faceCount) * 3, -1);
     std::vector<Point3d> positions;
     std::vector<int> sourceVertex;
+    ProgressCounter progress;
     for (int c = 0; c < 3 * faceCount; ++c) {
+        progress.Count();
         const int root = FindRoot(cornerParent, c);
         if (fanVertex[root] < 0) {
             const int v = s.faces[c / 3][c % 3];
@@ -298,6 +300,7 @@ inline void BuildCells(MeshingSurface &s)
     s.nonDiscRegions = 0;
     DiscGrower grower(s);
     std::vector<char> seen(faceCount, 0);
+    ProgressCounter progress;
     for (int start = 0; start < faceCount; ++start) {
         if (seen[start]) continue;
         const int region = s.faceRegion[start], piece = s.facePiece[start], before = previousCell[start];
@@ -311,6 +314,7 @@ inline void BuildCells(MeshingSurface &s)
                     component.push_back(g);
                     inOneCell &= previousCell[g] == before;
                 }
+        progress.Count(int(component.size()));
         if (inOneCell && int(component.size()) == previousOffset[before + 1] - previousOffset[before]) {
             grower.Commit(component, region);
             continue;

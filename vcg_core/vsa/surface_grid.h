@@ -78,7 +78,9 @@ public:
             cellSize_[i] = box_.Dim()[i] / dim_[i];
         }
         std::vector<int> faceOfEntry;
+        ProgressCounter progress;
         for (int f = 0; f < int(faces.size()); ++f) {
+            progress.Count();
             if (skip.empty() || !skip[f]) CellsCrossedBy(f, [&](int cell) {
                 faceCells_.push_back(cell);
                 faceOfEntry.push_back(f);

@@ -26,6 +26,9 @@ constexpr double kCarryItems = 8;   ///< carrying the patches' regions to the fa
 constexpr double kRoundItems = 8;   ///< a doubling round's insertions, which touch about every node a few times
 
 // Meshable partition (meshable_partition.h).
+constexpr double kTrialSetupEnd = 5;     ///< percent of the stage's bar for setting up the trials, about one trial's work
+constexpr double kTrialSetupItems = 4;   ///< progress items per face of it: splitting fans, two grids, a copy
+constexpr double kTrialItems = 3;        ///< per face of a trial: its cells, its pass, choosing split faces
 constexpr double kFacingAwayShare = 0.01;  ///< a region faces away past this share of its area facing the input's back
 constexpr double kStrayAllowance = 2e-3;   ///< of the diagonal: projected anchors move even exact planes' triangles
 
