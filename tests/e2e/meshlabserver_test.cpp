@@ -412,55 +412,42 @@ ServerRun RunWithProxyNum(const fs::path &dir, const fs::path &mesh, const std::
 }
 }  // namespace
 
-TEST(MeshLabServerBadInput, ProxyNumBelowOne)
+/// A bad input: its name, its OFF text (empty: fandisk), ProxyNum, and the message expected.
+struct BadInput
 {
-    const fs::path dir = WorkDir("bad_k0");
-    ExpectCleanFailure(RunWithProxyNum(dir, kFandisk, "0"), "at least 1");
-}
+    const char *name;
+    const char *off;
+    const char *proxyNum;
+    const char *message;
+};
+void PrintTo(const BadInput &bad, std::ostream *os) { *os << bad.name; }
 
-TEST(MeshLabServerBadInput, ProxyNumAboveFaceCount)
-{
-    const fs::path dir = WorkDir("bad_k_large");
-    ExpectCleanFailure(RunWithProxyNum(dir, kFandisk, "20000"), "exceeds the number of faces (12946)");
-}
-
-TEST(MeshLabServerBadInput, PointCloud)
-{
-    const fs::path dir = WorkDir("bad_point_cloud");
-    const fs::path cloud = WriteOff(dir, "cloud.off", "OFF\n4 0 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n");
-    ExpectCleanFailure(RunWithProxyNum(dir, cloud, "1"), "point cloud");
-}
-
-TEST(MeshLabServerBadInput, NonManifoldEdge)
-{
-    const fs::path dir = WorkDir("bad_non_manifold");
+const BadInput kBadInputs[] = {
+    {"ProxyNumBelowOne", "", "0", "at least 1"},
+    {"ProxyNumAboveFaceCount", "", "20000", "exceeds the number of faces (12946)"},
+    {"PointCloud", "OFF\n4 0 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n", "1", "point cloud"},
     // Three triangles sharing the edge 0-1.
-    const fs::path book = WriteOff(dir, "book.off",
-                                   "OFF\n5 3 0\n0 0 0\n1 0 0\n0 1 0\n0 -1 0\n0 0 1\n3 0 1 2\n3 1 0 3\n3 0 1 4\n");
-    ExpectCleanFailure(RunWithProxyNum(dir, book, "2"), "non-manifold");
-}
-
-TEST(MeshLabServerBadInput, InconsistentOrientation)
-{
-    const fs::path dir = WorkDir("bad_orientation");
+    {"NonManifoldEdge", "OFF\n5 3 0\n0 0 0\n1 0 0\n0 1 0\n0 -1 0\n0 0 1\n3 0 1 2\n3 1 0 3\n3 0 1 4\n", "2",
+     "non-manifold"},
     // Two triangles walking their shared edge 1-2 the same way.
-    const fs::path pair = WriteOff(dir, "pair.off", "OFF\n4 2 0\n0 0 0\n1 0 0\n0 1 0\n1 1 0\n3 0 1 2\n3 1 2 3\n");
-    ExpectCleanFailure(RunWithProxyNum(dir, pair, "1"), "not consistently oriented");
+    {"InconsistentOrientation", "OFF\n4 2 0\n0 0 0\n1 0 0\n0 1 0\n1 1 0\n3 0 1 2\n3 1 2 3\n", "1",
+     "not consistently oriented"},
+    {"NaNCoordinates", "OFF\n4 2 0\n0 0 0\n1 0 0\n0 1 0\nnan 1 0\n3 0 1 2\n3 2 1 3\n", "1", "NaN"},
+    {"EmptyMesh", "OFF\n0 0 0\n", "1", "The mesh is empty."},
+};
+
+class MeshLabServerBadInput : public testing::TestWithParam<BadInput> {};
+
+TEST_P(MeshLabServerBadInput, FailsCleanlyWithItsMessage)
+{
+    const BadInput &bad = GetParam();
+    const fs::path dir = WorkDir(std::string("bad_") + bad.name);
+    const fs::path mesh = *bad.off ? WriteOff(dir, "input.off", bad.off) : fs::path(kFandisk);
+    ExpectCleanFailure(RunWithProxyNum(dir, mesh, bad.proxyNum), bad.message);
 }
 
-TEST(MeshLabServerBadInput, NaNCoordinates)
-{
-    const fs::path dir = WorkDir("bad_nan");
-    const fs::path mesh = WriteOff(dir, "nan.off", "OFF\n4 2 0\n0 0 0\n1 0 0\n0 1 0\nnan 1 0\n3 0 1 2\n3 2 1 3\n");
-    ExpectCleanFailure(RunWithProxyNum(dir, mesh, "1"), "NaN");
-}
-
-TEST(MeshLabServerBadInput, EmptyMesh)
-{
-    const fs::path dir = WorkDir("bad_empty");
-    const fs::path empty = WriteOff(dir, "empty.off", "OFF\n0 0 0\n");
-    ExpectCleanFailure(RunWithProxyNum(dir, empty, "1"), "The mesh is empty.");
-}
+INSTANTIATE_TEST_SUITE_P(MeshLabServer, MeshLabServerBadInput, testing::ValuesIn(kBadInputs),
+                         [](const testing::TestParamInfo<BadInput> &info) { return std::string(info.param.name); });
 
 namespace {
 /// An extreme but finite input gives an output whose every coordinate is finite, saved by

@@ -355,23 +355,22 @@ TEST(FilterPlugin, SameSeedSameResult)
     EXPECT_EQ(first.Figures()["energy"], second.Figures()["energy"]);
 }
 
-TEST(FilterPlugin, ProxyNumZeroFailsCleanly)
-{
-    ExpectCleanFailure(ApplyVsa(kFandisk, {"ProxyNum=0"}), "The number of proxies must be at least 1 (got 0).");
-}
-
-TEST(FilterPlugin, ProxyNumAboveTheFaceCountFailsCleanly)
+TEST(FilterPlugin, BadParametersFailCleanly)
 {
     const int k = kFandiskFaces + 1;
-    ExpectCleanFailure(ApplyVsa(kFandisk, {QString("ProxyNum=%1").arg(k)}),
-                       QString("The number of proxies (%1) exceeds the number of faces (%2)")
-                           .arg(k)
-                           .arg(kFandiskFaces));
-}
-
-TEST(FilterPlugin, NegativeTargetErrorFailsCleanly)
-{
-    ExpectCleanFailure(ApplyVsa(kFandisk, {"TargetError=-1"}), "The target error must be a finite number >= 0");
+    const struct
+    {
+        QString parameter, message;
+    } cases[] = {
+        {"ProxyNum=0", "The number of proxies must be at least 1 (got 0)."},
+        {QString("ProxyNum=%1").arg(k),
+         QString("The number of proxies (%1) exceeds the number of faces (%2)").arg(k).arg(kFandiskFaces)},
+        {"TargetError=-1", "The target error must be a finite number >= 0"},
+    };
+    for (const auto &c : cases) {
+        SCOPED_TRACE(c.parameter.toStdString());
+        ExpectCleanFailure(ApplyVsa(kFandisk, {c.parameter}), c.message);
+    }
 }
 
 // The fuzzing's findings (issue 32): a flat square far from the origin gave the grids a zero cell
