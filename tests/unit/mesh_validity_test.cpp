@@ -135,6 +135,31 @@ TEST(MeshValidity, IntersectionsThroughSharedVerticesAndFolds)
     EXPECT_EQ(v.selfIntersections, 1);
 }
 
+TEST(MeshValidity, ASliverSeenEdgeOnIsOnlyItsEdges)
+{
+    // A triangle without area in the plane contains the points of its edges, not its whole line.
+    const std::array<vcg::Point2d, 3> edgeOn = {vcg::Point2d(0, 0), vcg::Point2d(0, 0), vcg::Point2d(2, 2)};
+    EXPECT_TRUE(detail::PointInTriangle2d({1, 1}, edgeOn));
+    EXPECT_TRUE(detail::PointInTriangle2d({2, 2}, edgeOn));
+    EXPECT_FALSE(detail::PointInTriangle2d({3, 3}, edgeOn));
+    EXPECT_FALSE(detail::PointInTriangle2d({-1, -1}, edgeOn));
+    EXPECT_FALSE(detail::PointInTriangle2d({1, 0}, edgeOn));
+
+    // Two slivers 1e12 long, 40 apart, each within 1 of the other's plane (kOnPlane times the
+    // longest edge): tested as coplanar, the first seen edge-on from the second, on the line
+    // through the second's far corner. A fuzz input's output had them, and the pass reported
+    // them as meeting while the check of the written mesh, whose grid keeps them apart, did not.
+    IndexedMesh slivers;
+    slivers.positions = {{0, 1, 0},           {0, 0, 0},
+                         {-40, -39.666667938232422, 333333331968},
+                         {-120, -120, 999999995904},
+                         {-120, -111, 0},     {-80, -77, 333333331968}};
+    slivers.faces = {{0, 1, 2}, {3, 4, 5}};
+    const std::vector<detail::FaceShape> shape = {detail::ShapeOfFace(slivers, 0), detail::ShapeOfFace(slivers, 1)};
+    EXPECT_FALSE(detail::FacesIntersect(slivers, shape, 0, 1));
+    EXPECT_FALSE(detail::FacesIntersect(slivers, shape, 1, 0));
+}
+
 TEST(MeshValidity, CoincidentCornersCountAsShared)
 {
     // An unmerged square (each triangle with its own vertices) and two triangles meeting at

@@ -98,8 +98,12 @@ inline bool SegmentsMeet2d(const Point2d &p, const Point2d &q, const Point2d &r,
            (d4 == 0 && onSegment(r, s, q));
 }
 
+/// Closed triangle t contains p. A triangle without area (a sliver seen edge-on in the projection
+/// of another face's plane) is only its edges: the signs below would accept the whole line.
 inline bool PointInTriangle2d(const Point2d &p, const std::array<Point2d, 3> &t)
 {
+    if (Orient2d(t[0], t[1], t[2]) == 0)
+        return SegmentsMeet2d(p, p, t[0], t[1]) || SegmentsMeet2d(p, p, t[1], t[2]) || SegmentsMeet2d(p, p, t[2], t[0]);
     const double a = Orient2d(t[0], t[1], p), b = Orient2d(t[1], t[2], p), c = Orient2d(t[2], t[0], p);
     return (a >= 0 && b >= 0 && c >= 0) || (a <= 0 && b <= 0 && c <= 0);
 }
