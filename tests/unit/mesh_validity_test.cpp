@@ -135,7 +135,7 @@ TEST(MeshValidity, IntersectionsThroughSharedVerticesAndFolds)
     EXPECT_EQ(v.selfIntersections, 1);
 }
 
-TEST(MeshValidity, ASliverSeenEdgeOnIsOnlyItsEdges)
+TEST(MeshValidity, SliversSeenEdgeOnMeetOnlyWhereTheyAre)
 {
     // A triangle without area in the plane contains the points of its edges, not its whole line.
     const std::array<vcg::Point2d, 3> edgeOn = {vcg::Point2d(0, 0), vcg::Point2d(0, 0), vcg::Point2d(2, 2)};
@@ -158,6 +158,15 @@ TEST(MeshValidity, ASliverSeenEdgeOnIsOnlyItsEdges)
     const std::vector<detail::FaceShape> shape = {detail::ShapeOfFace(slivers, 0), detail::ShapeOfFace(slivers, 1)};
     EXPECT_FALSE(detail::FacesIntersect(slivers, shape, 0, 1));
     EXPECT_FALSE(detail::FacesIntersect(slivers, shape, 1, 0));
+
+    // The same, moved by 1e-15: the first, seen from the second, keeps a sliver of area, and the
+    // rounding of the 2D test put the far corner inside it. Faces farther apart than the
+    // tolerances do not meet, whatever the tests say.
+    slivers.positions[0] = {9.6817835222768895e-16, 1, 7.7800048997201391e-17};
+    slivers.positions[4] = {-120, -111, 1.0038767675479583e-15};
+    const std::vector<detail::FaceShape> moved = {detail::ShapeOfFace(slivers, 0), detail::ShapeOfFace(slivers, 1)};
+    EXPECT_FALSE(detail::FacesIntersect(slivers, moved, 0, 1));
+    EXPECT_FALSE(detail::FacesIntersect(slivers, moved, 1, 0));
 }
 
 TEST(MeshValidity, CoincidentCornersCountAsShared)

@@ -279,27 +279,19 @@ TEST(MeshingRealMeshes, HalvingCellsRemovesIntersectionsThatAnchorsCannot)
 
 TEST(MeshingRealMeshes, HalvingGivesUpEarlyOnlyWhereTheInputIntersectsItself)
 {
-    // Halving rounds are counted by their progress calls. Dino at k=20 is a clean input whose
-    // first halving rounds add intersecting pairs before later ones remove them all (see
-    // kHalvingPatience; giving up early leaves 48 pairs here): halving must go on until none is
-    // left. "man" intersects itself (848 pairs) near the pairs its output keeps at k=20: after
-    // detail::kHalvingPatience rounds without fewer pairs, halving stops.
-    static int halvingCalls = 0;
-    vcg::CallBackPos *count = [](const int, const char *message) {
-        halvingCalls += std::string(message) == "VSA meshing: halving cells";
-        return true;
-    };
+    // Dino at k=20 is a clean input whose first halving rounds add intersecting pairs before later
+    // ones remove them all (see kHalvingPatience; giving up early leaves 48 pairs here): halving
+    // must go on until none is left. "man" intersects itself (848 pairs) near the pairs its output
+    // keeps at k=20: after detail::kHalvingPatience rounds without fewer pairs, halving stops.
     MeshingReport clean, intersecting;
-    halvingCalls = 0;
-    CheckCase({"dino.off", 20, SeedingMethod::Farthest}, false, MeshingParam(), &clean, count);
+    CheckCase({"dino.off", 20, SeedingMethod::Farthest}, false, MeshingParam(), &clean);
     EXPECT_EQ(clean.validity.selfIntersections, 0);
     EXPECT_GE(clean.outputHalvingRound, 3);
-    EXPECT_EQ(halvingCalls, clean.outputHalvingRound);
-    halvingCalls = 0;
-    CheckCase({"man.off", 20, SeedingMethod::Random}, false, MeshingParam(), &intersecting, count);
+    EXPECT_EQ(clean.halvingRoundsRun, clean.outputHalvingRound);
+    CheckCase({"man.off", 20, SeedingMethod::Random}, false, MeshingParam(), &intersecting);
     EXPECT_GT(intersecting.validity.selfIntersections, 0);
     EXPECT_LT(intersecting.outputHalvingRound + detail::kHalvingPatience, MeshingParam().halvingRounds);
-    EXPECT_EQ(halvingCalls, intersecting.outputHalvingRound + detail::kHalvingPatience);
+    EXPECT_EQ(intersecting.halvingRoundsRun, intersecting.outputHalvingRound + detail::kHalvingPatience);
 }
 
 TEST(MeshingRealMeshes, InputFacesStartFromTheAnchorsOfTheBestPass)

@@ -244,3 +244,36 @@ TEST(Progress, MeshableSplitReportsWithinItsTrials)
     EXPECT_GE(reports.size(), size_t(report.rounds + 1) * (faces / kProgressItems));
     for (const Report &r : reports) EXPECT_EQ(r.text, "VSA: splitting regions that do not mesh as one polygon");
 }
+
+/// The final meshing reports from within its passes (the surface's set-up, the triangulation of
+/// each cell), with texts of its own and positions that never go back, and reporting changes
+/// neither the output nor the report.
+TEST(Progress, MeshingReportsWithinItsPasses)
+{
+    ApproximationParam param;
+    param.proxyCount = 40;
+    Approximation approximation(vsa_test::LoadCgalMesh("armadillo.off"), param);
+    approximation.Initialize();
+    approximation.Run(10);
+    const ApproximationResult partition = approximation.Result();
+    TMesh quietOut, out;
+    const MeshingReport quiet = BuildApproximatingMesh(approximation.Mesh(), partition.partition, MeshingParam(), quietOut);
+    ASSERT_TRUE(quiet.ok) << quiet.error;
+    MeshingReport report;
+    {
+        EveryTick everyTick;
+        report = BuildApproximatingMesh(approximation.Mesh(), partition.partition, MeshingParam(), out, &Record);
+    }
+    ASSERT_TRUE(report.ok) << report.error;
+    EXPECT_EQ(report.validity.Summary(), quiet.validity.Summary());
+    EXPECT_EQ(report.faceRegion, quiet.faceRegion);
+    ASSERT_EQ(out.VN(), quietOut.VN());
+    for (int v = 0; v < out.VN(); ++v) EXPECT_EQ(out.vert[v].P(), quietOut.vert[v].P());
+    EXPECT_TRUE(Monotonic(reports));
+    for (const Report &r : reports) EXPECT_EQ(r.text.rfind("VSA meshing: ", 0), 0u) << r.text;
+    // The set-up and the first pass each go over every face: a report per 4096 faces at least.
+    const size_t faces = approximation.Mesh().FaceCount();
+    EXPECT_GE(Reports("VSA meshing: cutting regions into discs").size(), faces / kProgressItems);
+    EXPECT_GE(Reports("VSA meshing: anchors and triangulation").size(), faces / kProgressItems);
+    EXPECT_EQ(reports.back().text, "VSA meshing: done");
+}

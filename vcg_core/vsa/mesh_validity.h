@@ -301,6 +301,15 @@ inline bool FacesIntersect(const IndexedMesh &im, const std::vector<FaceShape> &
     if (CornersBefore(im, g, f)) std::swap(f, g);
     const auto &tf = im.faces[f], &tg = im.faces[g];
     const auto &P = im.positions;
+    // Faces farther apart than the tolerances below do not meet, whatever the rounding of the
+    // tests (two slivers 1e12 long and 40 apart passed them): the grids rely on it (PairGridMargin).
+    const double longest = std::max(shape[f].longestEdge, shape[g].longestEdge);
+    const double reach = std::max(clearance, kOnPlane * longest);
+    for (int axis = 0; axis < 3; ++axis) {
+        const auto [fLow, fHigh] = std::minmax({P[tf[0]][axis], P[tf[1]][axis], P[tf[2]][axis]});
+        const auto [gLow, gHigh] = std::minmax({P[tg[0]][axis], P[tg[1]][axis], P[tg[2]][axis]});
+        if (fLow > gHigh + reach || gLow > fHigh + reach) return false;
+    }
     int sharedF[3], sharedG[3], shared = 0;
     for (int i = 0; i < 3; ++i)
         for (int j = 0; j < 3; ++j)
@@ -312,7 +321,6 @@ inline bool FacesIntersect(const IndexedMesh &im, const std::vector<FaceShape> &
     if (shared == 3) return false;  // a duplicate face (counted as such if it shares vertices)
     const Point3d a = P[tf[0]], b = P[tf[1]], c = P[tf[2]];
     const Point3d &nf = shape[f].normal, &ng = shape[g].normal;
-    const double longest = std::max(shape[f].longestEdge, shape[g].longestEdge);
     const int axis = DominantAxis(nf);
     // Heights of g's corners over f's plane and of f's corners over g's plane, each needed
     // by two of the edge-triangle tests below.

@@ -8,6 +8,7 @@
 #include <vsa/mesh_validity.h>
 #include <vsa/meshing_param.h>
 #include <vsa/meshing_repair.h>
+#include <vsa/progress.h>
 #include <vsa/proxy.h>
 #include <vsa/tuning.h>
 
@@ -62,8 +63,8 @@ public:
     /// not faces or regions: the planes, the chord deviation bound and the gap test's grid of
     /// the first surface serve every surface split from it.
     SurfaceMeshing(const IndexedMesh &in, std::shared_ptr<MeshingSurface> surface, const std::vector<Proxy> &given,
-                   const MeshingParam &param, double clearance, MeshingReport &report, vcg::CallBackPos *cb)
-        : param_(param), report_(report), cb_(cb), inputIntersections_(in), clearance_(clearance),
+                   const MeshingParam &param, double clearance, MeshingReport &report, ProgressStage &progress)
+        : param_(param), report_(report), progress_(progress), inputIntersections_(in), clearance_(clearance),
           surface_(std::move(surface)), proxies_(UsableProxies(*surface_, given)),
           chordDeviationBound_(ChordDeviationBound(*surface_, proxies_, param.chordErrorFactor)),
           gapTest_(surface_->positions, surface_->faces, param.chordGapThreshold), bestSurface_(surface_)
@@ -76,7 +77,7 @@ public:
     /// The first surface, meshed with repairs.
     void Repair()
     {
-        best_ = MesherOf(*surface_, cb_, nullptr);
+        best_ = MesherOf(*surface_, &progress_, nullptr);
         best_->Repair();
     }
 
@@ -93,7 +94,11 @@ public:
         int halvedSoFar = 0;
         bool inputIntersectsThere = false;  // at a cell of an intersecting face, in some round
         for (int round = 1; round <= param_.halvingRounds; ++round) {
-            if (cb_) cb_(70 + 10 * round / (param_.halvingRounds + 1), "VSA meshing: halving cells");
+            // Each round meshes the whole surface again, with repairs: a few passes' ticks.
+            const double share = 10.0 / (param_.halvingRounds + 1);
+            progress_.Step(70 + share * round, 70 + share * (round + 1), kHalvingPasses * latest->FaceCount(),
+                           "VSA meshing: halving cells");
+            ++report_.halvingRoundsRun;
             const std::vector<char> intersectingInput = inputIntersections_.CellsAmong(*latest, flagged);
             for (int c = 0; c < latest->CellCount(); ++c) {
                 inputIntersectsThere |= flagged[c] && intersectingInput[c];
@@ -142,7 +147,7 @@ public:
         int carvedSoFar = 0;
         bool inputIntersectsThere = false;
         for (int round = 1; round <= kCarvingRounds && best_->Best().defects.HasPairs(); ++round) {
-            if (cb_) cb_(80, "VSA meshing: carving cells");
+            progress_.Step(80, 80, 1, "VSA meshing: carving cells");
             const Mesher &latestMesher = latestAttempt ? *latestAttempt : *best_;
             const MeshingPass &pass = latestMesher.Best().pass;
             const PassDefects &defects = latestMesher.Best().defects;
@@ -173,7 +178,7 @@ public:
 private:
     const MeshingParam &param_;
     MeshingReport &report_;
-    vcg::CallBackPos *cb_;
+    ProgressStage &progress_;
     InputIntersections inputIntersections_;
     double clearance_;  ///< output faces closer than this are repaired as if they met
     std::shared_ptr<MeshingSurface> surface_;  ///< the first surface: gapTest_ points into it
@@ -183,7 +188,7 @@ private:
     std::shared_ptr<MeshingSurface> bestSurface_;
     std::unique_ptr<Mesher> best_;  ///< the mesher of bestSurface_
 
-    std::unique_ptr<Mesher> MesherOf(const MeshingSurface &cells, vcg::CallBackPos *progress, const Mesher *earlier)
+    std::unique_ptr<Mesher> MesherOf(const MeshingSurface &cells, ProgressStage *progress, const Mesher *earlier)
     {
         return std::make_unique<Mesher>(cells, proxies_, chordDeviationBound_, param_, clearance_,
                                          param_.chordGapThreshold > 0 ? &gapTest_ : nullptr, inputIntersections_,
@@ -294,7 +299,8 @@ MeshingReport BuildApproximatingMesh(const IndexedMesh &in, const Partition &par
     report.error = detail::MeshingInputError(in, partition, param);
     if (!report.error.empty()) return report;
 
-    if (cb) cb(0, "VSA meshing: cutting regions into discs");
+    ProgressStage progress(cb, "VSA meshing: cutting regions into discs");
+    progress.Step(0, 20, detail::kMeshingSetupItems * in.FaceCount());
     const int regionCount = int(partition.proxies.size());
     auto surface = std::make_shared<MeshingSurface>();
     if (!BuildMeshingSurface(in, partition.faceRegion, regionCount, *surface, report.error)) return report;
@@ -305,7 +311,7 @@ MeshingReport BuildApproximatingMesh(const IndexedMesh &in, const Partition &par
 
     const double clearance = detail::SavedCoordinateClearance<typename OutMeshType::ScalarType>(in.positions);
     detail::SurfaceMeshing<typename OutMeshType::CoordType> meshing(in, surface, partition.proxies, param, clearance,
-                                                                   report, cb);
+                                                                   report, progress);
     meshing.Repair();
     meshing.Halve();
     const double faceBudget = param.maxInputFacesGrowth * double(meshing.Best().pass.triangles.size());
@@ -322,12 +328,12 @@ MeshingReport BuildApproximatingMesh(const IndexedMesh &in, const Partition &par
         report.error = "an output vertex has a coordinate that the output mesh's scalar cannot hold";
         return report;
     }
-    if (cb) cb(80, "VSA meshing: writing the mesh");
+    progress.Step(80, 90, pass.triangles.size(), "VSA meshing: writing the mesh");
     detail::WriteOutputMesh(pass, param.polygonal, out);
     for (int c : pass.triangleCell) report.faceRegion.push_back(s.cellRegion[c]);
     for (int v : pass.vertexSource) report.vertexSource.push_back(v < 0 ? -1 : s.sourceVertex[v]);
 
-    if (cb) cb(90, "VSA meshing: checking the output");
+    progress.Step(90, 100, detail::kCheckItems * pass.triangles.size(), "VSA meshing: checking the output");
     MeshDiagnostics diagnostics;
     const IndexedMesh written = BuildIndexedMesh(out, &diagnostics);
     const bool counted = param.repairRounds > 0 && detail::WritesPass(written, pass);
@@ -337,7 +343,7 @@ MeshingReport BuildApproximatingMesh(const IndexedMesh &in, const Partition &par
         report.closePairs = int(meshing.Best().defects.closePairs.size());
     }
     report.ok = true;
-    if (cb) cb(100, "VSA meshing: done");
+    progress.Done("VSA meshing: done");
     return report;
 }
 

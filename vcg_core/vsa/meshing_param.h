@@ -82,6 +82,7 @@ struct MeshingReport
     int cells = 0;                     ///< discs triangulated (regions, or their pieces)
     int cellsHalved = 0;    ///< cells halved on the way to the output (see MeshingParam::halvingRounds)
     int outputHalvingRound = 0;  ///< the halving round the output came from (0: none)
+    int halvingRoundsRun = 0;    ///< halving rounds run, those after the output's included
     int piecesCarved = 0;   ///< pieces carved out of cells on the way to the output (see maxInputFacesGrowth)
     int outputCarvingRound = 0;  ///< the carving round the output came from (0: none)
 

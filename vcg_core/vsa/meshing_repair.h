@@ -12,6 +12,7 @@
 #include <vsa/meshing_pass.h>
 #include <vsa/meshing_surface.h>
 #include <vsa/pass_defects.h>
+#include <vsa/progress.h>
 #include <vsa/surface_grid.h>
 #include <vsa/tuning.h>
 
@@ -285,10 +286,10 @@ public:
     /// nullptr.
     CellMesher(const MeshingSurface &s, const std::vector<Proxy> &proxies, double chordDeviationBound,
                const MeshingParam &param, double clearance, ChordGapTest *gapTest,
-               InputIntersections &inputIntersections, int &passes, vcg::CallBackPos *cb,
+               InputIntersections &inputIntersections, int &passes, ProgressStage *progress,
                const CellMesher *earlier = nullptr)
         : s_(s), proxies_(proxies), param_(param), clearance_(clearance), inputIntersections_(inputIntersections),
-          passes_(passes), cb_(cb),
+          passes_(passes), progress_(progress),
           subdivision_(s, proxies_, param.chordThreshold, chordDeviationBound, gapTest),
           requiredAnchors_(s.VertexCount(), 0), pinnedAnchors_(s.VertexCount(), 0), inputCells_(s.CellCount(), 0),
           flooding_(earlier ? CellFlooding(s, earlier->flooding_) : CellFlooding(s))
@@ -303,7 +304,7 @@ public:
     /// repairRounds or the repair diverges (see kRepairPatience).
     void Repair()
     {
-        if (cb_) cb_(20, "VSA meshing: anchors and triangulation");
+        Step(kFirstPassFrom, kRepairFrom, "VSA meshing: anchors and triangulation");
         best_.pass = RunPass(nullptr);
         if (param_.repairRounds > 0) best_.defects = FindDefects(best_.pass, clearance_);
         best_.requiredAnchors = requiredAnchors_;
@@ -313,7 +314,7 @@ public:
             if (round_ - 1 - best_.repairRound >= kRepairPatience &&
                 defects_.Count() >= kRepairDivergence * best_.defects.Count())
                 break;
-            if (cb_) cb_(Progress(), "VSA meshing: repairing folds and self-intersections");
+            Step(RoundFrom(round_), RoundFrom(round_ + 1), "VSA meshing: repairing folds and self-intersections");
             const MeshingPass &previous = round_ == 1 ? best_.pass : latest_;  // latest_: none yet
             if (RespondToDefects(s_, previous, defects_, requiredAnchors_, pinnedAnchors_) == 0) break;
             MeshingPass next = RunPass(&previous);
@@ -338,7 +339,7 @@ public:
         requiredAnchors_ = best_.requiredAnchors;
         pinnedAnchors_ = best_.pinnedAnchors;
         for (int last = round_ + param_.repairRounds; round_ < last && defects_.HasPairs(); ++round_) {
-            if (cb_) cb_(Progress(), "VSA meshing: keeping input faces against self-intersections");
+            Step(RoundFrom(round_), RoundFrom(round_ + 1), "VSA meshing: keeping input faces against self-intersections");
             const std::vector<char> flagged = CellsOfIntersectingFaces(s_, latest_, defects_);
             std::vector<char> excluded = inputIntersections_.CellsAmong(s_, flagged);
             const std::vector<char> degenerate = inputIntersections_.CellsWithDegenerateFaces(s_, flagged);
@@ -363,7 +364,7 @@ private:
     double clearance_;  ///< output faces closer than this make a close pair (see FindDefects)
     InputIntersections &inputIntersections_;
     int &passes_;
-    vcg::CallBackPos *cb_;
+    ProgressStage *progress_;  ///< the final meshing's, whose bar the passes move; else nullptr
     ChainSubdivision subdivision_;
     std::vector<char> requiredAnchors_, pinnedAnchors_, inputCells_;
     CellFlooding flooding_;
@@ -372,7 +373,19 @@ private:
     PassDefects defects_;  ///< those of latest_ (of the first pass, before any repair)
     int round_ = 1;        ///< the next round
 
-    int Progress() const { return 20 + 50 * round_ / (2 * param_.repairRounds + 1); }
+    /// The final meshing's bar: the first pass from 20 to 50 percent, then its repair rounds and
+    /// those that keep input faces (up to 2 repairRounds in all) to 70.
+    static constexpr double kFirstPassFrom = 20, kRepairFrom = 50, kRepairTo = 70;
+    double RoundFrom(int round) const
+    {
+        return kRepairFrom + (kRepairTo - kRepairFrom) * std::min(1.0, (round - 1) / (2.0 * param_.repairRounds));
+    }
+
+    /// The next pass, one tick per face of the surface (RunMeshingPass), moves the bar from `from` to `to`.
+    void Step(double from, double to, const char *text)
+    {
+        if (progress_) progress_->Step(from, to, s_.FaceCount(), text);
+    }
 
     /// The last pass becomes the best, from repair round `round`.
     void KeepLatest(int round)

@@ -56,9 +56,11 @@ public:
     ProgressStage &operator=(const ProgressStage &) = delete;
 
     /// The work from here to the next Step takes the position from `from` to `to` in about
-    /// `items` items of work (ProgressTick); it stops at `to` when there is more.
-    void Step(double from, double to, double items)
+    /// `items` items of work (ProgressTick); it stops at `to` when there is more. A `text` says
+    /// what the stage does from here on.
+    void Step(double from, double to, double items, const char *text = nullptr)
     {
+        if (text) text_ = text;
         from_ = std::max(from, position_);
         to_ = std::max(to, from_);
         items_ = std::max(items, 1.0);
@@ -85,10 +87,12 @@ public:
         pending_ += items;
     }
 
-    /// The stage is over: reports 100, and the stage that was current before it is again.
-    void Done()
+    /// The stage is over: reports 100 (with `text`, if given), and the stage that was current
+    /// before it is again.
+    void Done(const char *text = nullptr)
     {
         if (!cb_) return;
+        if (text) text_ = text;
         from_ = to_ = 100;
         Report(std::chrono::steady_clock::now());
         Current() = outer_;

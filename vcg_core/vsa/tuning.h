@@ -32,6 +32,11 @@ constexpr double kTrialItems = 3;        ///< per face of a trial: its cells, it
 constexpr double kFacingAwayShare = 0.01;  ///< a region faces away past this share of its area facing the input's back
 constexpr double kStrayAllowance = 2e-3;   ///< of the diagonal: projected anchors move even exact planes' triangles
 
+// The final meshing's progress (meshing.h), in progress items per face, as kTrialItems; a pass ticks once per face.
+constexpr double kMeshingSetupItems = 3;  ///< cutting regions into discs, the gap test's grid, the input's intersections
+constexpr double kHalvingPasses = 4;      ///< a halving round meshes the whole surface again, with repair passes
+constexpr double kCheckItems = 3;         ///< per output face: indexing the written mesh, then checking it
+
 // Chords and cells (chords.h, cell_triangulation.h).
 constexpr int kChordGapSamples = 8;  ///< points the gap test tries along a chord: it strays over a hole, not a point
 constexpr double kGoodFan = 0.05;    ///< a fan whose thinnest triangle has this sine of its smallest angle will do
