@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cstring>
 #include <limits>
 #include <set>
 #include <tuple>
@@ -374,6 +375,45 @@ TEST(PartitionApproximation, RegionOperations)
             EXPECT_THROW(a.Merge(0, r), std::invalid_argument);
             break;
         }
+}
+
+TEST(PartitionApproximation, SplitEachIsSplitAfterSplit)
+{
+    // Several regions split at once, with one pass over the faces, end as split one at a time:
+    // regions, proxies, errors and energies to the bit (sums over a region's faces keep the
+    // chunks of a sum over every face, see SumByKeyOfListed).
+    const IndexedMesh im = vsa_test::LoadCgalMesh("armadillo.off");
+    auto converged = [&] {
+        Approximation a(im, Params(30, MetricKind::L21, SeedingMethod::Hierarchical, 2));
+        a.Initialize();
+        a.Run(5);
+        return a;
+    };
+    Approximation each = converged(), oneByOne = converged();
+    const std::vector<int> regions = {3, 11, 17, 29};
+    std::vector<int> faces(regions.size(), -1);  // the second region at its worst face
+    for (size_t i = 0; i < regions.size(); ++i)
+        if (i != 1)
+            for (int f = im.FaceCount() - 1; f >= 0 && faces[i] < 0; --f)
+                if (each.CurrentPartition().faceRegion[f] == regions[i] && f != each.SeedFaces()[regions[i]])
+                    faces[i] = f;
+    each.SplitEach(regions, faces);
+    for (size_t i = 0; i < regions.size(); ++i) EXPECT_EQ(oneByOne.Split(regions[i], faces[i]), 30 + int(i));
+    const ApproximationResult a = each.Result(), b = oneByOne.Result();
+    EXPECT_EQ(a.proxyCount, 34);
+    EXPECT_TRUE(a.partition.faceRegion == b.partition.faceRegion);
+    EXPECT_EQ(std::memcmp(a.partition.proxies.data(), b.partition.proxies.data(), sizeof(Proxy) * 34), 0);
+    EXPECT_TRUE(a.regionEnergy == b.regionEnergy);
+    EXPECT_TRUE(each.FaceErrors() == oneByOne.FaceErrors());
+    EXPECT_TRUE(each.SeedFaces() == oneByOne.SeedFaces());
+    EXPECT_EQ(vsa_test::CheckPartition(im, a.partition.faceRegion, 34), "");
+
+    // Bad arguments change nothing.
+    EXPECT_THROW(each.SplitEach({1, 2}, {-1}), std::invalid_argument);
+    EXPECT_THROW(each.SplitEach({1, 2, 1}, {-1, -1, -1}), std::invalid_argument);
+    EXPECT_THROW(each.SplitEach({1, 34}, {-1, -1}), std::invalid_argument);
+    EXPECT_EQ(each.ProxyCount(), 34);
+    EXPECT_TRUE(each.CurrentPartition().faceRegion == a.partition.faceRegion);
 }
 
 TEST(PartitionApproximation, TeleportLeavesAStuckMinimum)

@@ -10,6 +10,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstring>
 #include <string>
 #include <vector>
@@ -102,6 +103,39 @@ TEST(ThreadCount, ParallelPassesSplitIntoSeveralChunks)
     // The meshes below must span several chunks, or the tests could not tell orders apart.
     EXPECT_GE(ChunkCount(Indexed("sphere").FaceCount()), 5);
     EXPECT_GE(ChunkCount(Indexed("fandisk.off").FaceCount()), 3);
+}
+
+TEST(ThreadCount, SumsOfListedItemsAreTheSameBitsAsSumsOverAll)
+{
+    // Values of very different sizes, so that another order of the additions would round
+    // differently; keys in runs, as regions are; every third item listed.
+    const size_t count = 5 * kChunkItems + 123;
+    std::vector<double> value(count);
+    std::vector<int> key(count), listed;
+    for (size_t i = 0; i < count; ++i) {
+        value[i] = std::ldexp(1.0 + double(i % 97) / 97, int(i % 61) - 30);
+        key[i] = int(i / 1000) % 7;
+        if (i % 3 == 0) listed.push_back(int(i));
+    }
+    auto add = [&](double &sum, size_t i) { sum += value[i]; };
+    auto merge = [](double &sum, double part) { sum += part; };
+    const std::vector<double> listedSums = [&] {
+        std::vector<double> sums(7, 0.25);
+        SumByKeyOfListed(listed, sums, [&](size_t i) { return key[i]; }, add, merge);
+        return sums;
+    }();
+    for (int threads : kThreadCounts) {
+        const std::vector<double> all = WithThreads(threads, [&] {
+            std::vector<double> sums(7, 0.25);
+            SumByKey(count, sums, [&](size_t i) { return i % 3 == 0 ? key[i] : -1; }, add, merge);
+            return sums;
+        });
+        EXPECT_TRUE(Bytes(all) == Bytes(listedSums)) << threads << " threads";
+    }
+    // Summed in another order, they would not be the same bits: the test can tell.
+    std::vector<double> reversed(7, 0.25);
+    for (auto i = listed.rbegin(); i != listed.rend(); ++i) reversed[key[*i]] += value[*i];
+    EXPECT_FALSE(Bytes(reversed) == Bytes(listedSums));
 }
 
 TEST(ThreadCount, PartitionIsTheSameBitsOnAnyNumberOfThreads)

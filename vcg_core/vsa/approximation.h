@@ -292,16 +292,40 @@ public:
     /// confined to the region's faces. Returns the new region's index (the last).
     int Split(int region, int face = -1)
     {
-        RequireInitialized("Split");
-        RequireRegion(region);
-        const auto &faceRegion = state_.partition.faceRegion;
-        if (std::count(faceRegion.begin(), faceRegion.end(), region) < 2)
-            throw std::invalid_argument("Region " + std::to_string(region) + " has a single face: cannot split it.");
-        if (face < 0 || face >= mesh_.FaceCount() || faceRegion[face] != region || state_.IsSeed(face))
-            face = WorstFace(region);
-        WithMetric([&](const auto &metric, auto &ws) { SplitRegion(metric, ws, region, face); });
-        StartTracking(false);
+        SplitEach({region}, {face});
         return ProxyCount() - 1;
+    }
+
+    /// Split for each of `regions` (distinct), at the matching one of `faces`, in this order:
+    /// the same as one Split after the other, with one pass over the mesh's faces for all.
+    void SplitEach(const std::vector<int> &regions, const std::vector<int> &faces)
+    {
+        RequireInitialized("Split");
+        if (faces.size() != regions.size()) throw std::invalid_argument("Split needs one face per region.");
+        std::vector<int> slot(ProxyCount(), -1);
+        for (size_t i = 0; i < regions.size(); ++i) {
+            RequireRegion(regions[i]);
+            if (slot[regions[i]] >= 0)
+                throw std::invalid_argument("Region " + std::to_string(regions[i]) + " is split twice.");
+            slot[regions[i]] = int(i);
+        }
+        const auto &faceRegion = state_.partition.faceRegion;
+        std::vector<std::vector<int>> regionFaces(regions.size());  // ascending
+        for (int f = 0; f < mesh_.FaceCount(); ++f)
+            if (slot[faceRegion[f]] >= 0) regionFaces[slot[faceRegion[f]]].push_back(f);
+        for (size_t i = 0; i < regions.size(); ++i)
+            if (regionFaces[i].size() < 2)
+                throw std::invalid_argument("Region " + std::to_string(regions[i]) +
+                                            " has a single face: cannot split it.");
+        WithMetric([&](const auto &metric, auto &ws) {
+            for (size_t i = 0; i < regions.size(); ++i) {
+                int face = faces[i];
+                if (face < 0 || face >= mesh_.FaceCount() || faceRegion[face] != regions[i] || state_.IsSeed(face))
+                    face = WorstFace(regionFaces[i]);
+                SplitRegion(metric, ws, regions[i], face, regionFaces[i]);
+            }
+        });
+        StartTracking(false);
     }
 
     /// The paper's region teleportation: merges the adjacent pair whose merge costs least and
@@ -457,9 +481,17 @@ private:
     /// The non-seed face of `region` with the largest error (ties: lowest index), or -1.
     int WorstFace(int region) const
     {
+        std::vector<int> faces;
+        for (int f = 0; f < mesh_.FaceCount(); ++f)
+            if (state_.partition.faceRegion[f] == region) faces.push_back(f);
+        return WorstFace(faces);
+    }
+
+    /// The non-seed face among `faces` (ascending) with the largest error (ties: the first), or -1.
+    int WorstFace(const std::vector<int> &faces) const
+    {
         int worst = -1;
-        for (int f = 0; f < mesh_.FaceCount(); ++f) {
-            if (state_.partition.faceRegion[f] != region) continue;
+        for (int f : faces) {
             if (state_.IsSeed(f)) continue;
             if (worst < 0 || state_.faceError[f] > state_.faceError[worst]) worst = f;
         }
@@ -505,12 +537,11 @@ private:
     }
 
     template <class Metric>
-    void SplitRegion(const Metric &metric, PartitionWorkspace<Metric> &ws, int region, int seed)
+    /// `faces`: the region's, ascending.
+    void SplitRegion(const Metric &metric, PartitionWorkspace<Metric> &ws, int region, int seed,
+                     const std::vector<int> &faces)
     {
         auto &faceRegion = state_.partition.faceRegion;
-        std::vector<int> faces;
-        for (int f = 0; f < mesh_.FaceCount(); ++f)
-            if (faceRegion[f] == region) faces.push_back(f);
         const int added = ProxyCount();
         state_.partition.proxies.push_back(FitFace(metric, geometry_, seed));
         state_.seeds.push_back(seed);
@@ -522,7 +553,7 @@ private:
             FloodWithin(mesh_, metric, state_.partition.proxies, seeds, faces, faceRegion, ws);
             for (int f : faces)  // faces neither seed reached (the region was in pieces): back to it
                 if (faceRegion[f] < 0) faceRegion[f] = region;
-            FitRegions(metric, state_, only);
+            FitRegions(metric, state_, only, &faces);
         }
     }
 

@@ -361,12 +361,13 @@ MeshablePartitionReport MakePartitionMeshable(Approximation &approximation, cons
             break;
         }
         // Split in region order, so that the new regions' indices do not depend on the ranking's ties.
-        std::vector<int> chosen(regions.begin(), regions.begin() + room);
+        std::vector<int> chosen(regions.begin(), regions.begin() + room), splitFaces;
         std::sort(chosen.begin(), chosen.end());
         for (int r : chosen) {
-            approximation.Split(r, trial.splitFace[r]);
+            splitFaces.push_back(trial.splitFace[r]);
             ++report.splits[int(trial.fault[r])];
         }
+        approximation.SplitEach(chosen, splitFaces);
         if (param.lloydIterations > 0) approximation.Run(param.lloydIterations);
         ++report.rounds;
     }

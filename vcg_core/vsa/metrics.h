@@ -236,14 +236,15 @@ private:
     const FaceGeometry *g_;
 };
 
-/// Adds the moments of every face to those of its key (keyOf(face), -1 for none), in parallel
-/// (SumByKey: the same bits on any number of threads).
+/// Adds the moments of every face (of the ascending `listed` ones, if given) to those of its
+/// key (keyOf(face), -1 for none), in parallel (SumByKey: the same bits on any number of threads).
 template <class Metric, class KeyOf>
-void SumMoments(const Metric &metric, KeyOf &&keyOf, size_t faceCount, std::vector<typename Metric::Moments> &moments)
+void SumMoments(const Metric &metric, KeyOf &&keyOf, size_t faceCount, std::vector<typename Metric::Moments> &moments,
+                const std::vector<int> *listed = nullptr)
 {
     using Moments = typename Metric::Moments;
     SumByKey(
-        faceCount, moments, keyOf, [&](Moments &m, size_t f) { metric.Add(m, int(f)); },
+        faceCount, listed, moments, keyOf, [&](Moments &m, size_t f) { metric.Add(m, int(f)); },
         [&](Moments &m, const Moments &part) { metric.Add(m, part); });
 }
 

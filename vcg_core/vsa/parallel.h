@@ -123,6 +123,44 @@ void SumByKey(size_t itemCount, std::vector<Value> &sums, KeyOf &&keyOf, Add &&a
         for (const auto &p : chunkPartials) merge(sums[p.first], p.second);
 }
 
+/// SumByKey over the listed items only (ascending), on the calling thread: the same chunks and
+/// the same order, so the same bits as SumByKey with keyOf = -1 for every other item, at the
+/// cost of the list (a few regions' faces) rather than of all items.
+template <class Value, class KeyOf, class Add, class Merge>
+void SumByKeyOfListed(const std::vector<int> &items, std::vector<Value> &sums, KeyOf &&keyOf, Add &&add,
+                      Merge &&merge)
+{
+    const std::vector<Value> empty = sums;  // every chunk's partials start from these
+    std::vector<int> slot(sums.size(), -1);
+    std::vector<std::pair<int, Value>> partials;
+    for (size_t i = 0; i < items.size();) {
+        const int chunk = items[i] / kChunkItems;
+        for (; i < items.size() && items[i] / kChunkItems == chunk; ++i) {
+            const int key = keyOf(size_t(items[i]));
+            if (key < 0) continue;
+            if (slot[key] < 0) {
+                slot[key] = int(partials.size());
+                partials.emplace_back(key, empty[key]);
+            }
+            add(partials[slot[key]].second, size_t(items[i]));
+        }
+        for (const auto &p : partials) {
+            merge(sums[p.first], p.second);
+            slot[p.first] = -1;
+        }
+        partials.clear();
+    }
+}
+
+/// SumByKeyOfListed over `*listed` when given, else SumByKey over all `itemCount` items.
+template <class Value, class KeyOf, class Add, class Merge>
+void SumByKey(size_t itemCount, const std::vector<int> *listed, std::vector<Value> &sums, KeyOf &&keyOf, Add &&add,
+              Merge &&merge)
+{
+    if (listed) SumByKeyOfListed(*listed, sums, keyOf, add, merge);
+    else SumByKey(itemCount, sums, keyOf, add, merge);
+}
+
 }  // namespace vsa
 }  // namespace tri
 }  // namespace vcg

@@ -322,8 +322,11 @@ int FloodWithin(const Graph &mesh, const Metric &metric, const std::vector<Proxy
 /// Measures the regions flagged in `only` (every region when it is empty): each face's error to
 /// its region's proxy, the regions' energies, and their seeds (smallest error, lowest index).
 /// In parallel over chunks of faces; the energies are summed chunk by chunk (SumByKey).
+/// `listed`: the flagged regions' faces, ascending, when the caller has them (a few regions of
+/// a large mesh); the same bits, without a pass over every face.
 template <class Metric>
-void MeasureRegions(const Metric &metric, RegionState &s, const std::vector<char> &only = {})
+void MeasureRegions(const Metric &metric, RegionState &s, const std::vector<char> &only = {},
+                    const std::vector<int> *listed = nullptr)
 {
     struct Measure
     {
@@ -335,7 +338,7 @@ void MeasureRegions(const Metric &metric, RegionState &s, const std::vector<char
     const auto &proxies = s.partition.proxies;
     std::vector<Measure> measures(s.RegionCount());
     SumByKey(
-        faceRegion.size(), measures, detail::FlaggedRegionOf(faceRegion, only),
+        faceRegion.size(), listed, measures, detail::FlaggedRegionOf(faceRegion, only),
         [&](Measure &m, size_t f) {
             const double e = metric.Error(int(f), proxies[faceRegion[f]]);
             s.faceError[f] = e;
@@ -362,9 +365,10 @@ void MeasureRegions(const Metric &metric, RegionState &s, const std::vector<char
 /// Refits the proxies of the regions flagged in `only` (all when empty) to their faces in one
 /// parallel pass over the faces (moments summed chunk by chunk, SumByKey), then measures them.
 /// A region whose faces admit no fit (zero area, or L2,1 normals that cancel out) keeps its
-/// previous proxy's normal.
+/// previous proxy's normal. `listed`: as for MeasureRegions.
 template <class Metric>
-void FitRegions(const Metric &metric, RegionState &s, const std::vector<char> &only = {})
+void FitRegions(const Metric &metric, RegionState &s, const std::vector<char> &only = {},
+                const std::vector<int> *listed = nullptr)
 {
     const int regionCount = s.RegionCount();
     auto &proxies = s.partition.proxies;
@@ -372,10 +376,10 @@ void FitRegions(const Metric &metric, RegionState &s, const std::vector<char> &o
     moments.reserve(regionCount);
     for (int r = 0; r < regionCount; ++r) moments.push_back(metric.EmptyMoments(proxies[r].point));
     const auto &faceRegion = s.partition.faceRegion;
-    SumMoments(metric, detail::FlaggedRegionOf(faceRegion, only), faceRegion.size(), moments);
+    SumMoments(metric, detail::FlaggedRegionOf(faceRegion, only), faceRegion.size(), moments, listed);
     for (int r = 0; r < regionCount; ++r)
         if (only.empty() || only[r]) proxies[r] = metric.Fit(moments[r], proxies[r]);
-    MeasureRegions(metric, s, only);
+    MeasureRegions(metric, s, only, listed);
 }
 
 /// Relabels every face by flooding from the current seeds with the current proxies. Every
