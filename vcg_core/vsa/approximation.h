@@ -311,7 +311,8 @@ public:
         }
         const auto &faceRegion = state_.partition.faceRegion;
         std::vector<std::vector<int>> regionFaces(regions.size());  // ascending
-        for (int f = 0; f < mesh_.FaceCount(); ++f)
+        ProgressCounter progress;
+        for (int f = 0; f < mesh_.FaceCount(); ++f, progress.Count())
             if (slot[faceRegion[f]] >= 0) regionFaces[slot[faceRegion[f]]].push_back(f);
         for (size_t i = 0; i < regions.size(); ++i)
             if (regionFaces[i].size() < 2)

@@ -157,16 +157,18 @@ private:
         {
             // Each edge once: from the higher of its two faces, or from its only one.
             std::vector<std::array<int, 2>> edges;
-            for (int f = 0; f < s.FaceCount(); ++f)
+            ProgressCounter progress;
+            for (int f = 0; f < s.FaceCount(); ++f, progress.Count())
                 for (int i = 0; i < 3; ++i)
                     if (s.neighbors[f][i] < f) edges.push_back({s.faces[f][i], s.faces[f][(i + 1) % 3]});
             offset.assign(size_t(s.VertexCount()) + 1, 0);
-            for (const auto &[u, w] : edges) ++offset[u + 1], ++offset[w + 1];
+            for (const auto &[u, w] : edges) ++offset[u + 1], ++offset[w + 1], progress.Count();
             std::partial_sum(offset.begin(), offset.end(), offset.begin());
             std::vector<int> fill(offset.begin(), offset.end() - 1);
             to.resize(2 * edges.size());
             length.resize(2 * edges.size());
             for (const auto &[u, w] : edges) {
+                progress.Count();
                 const double edgeLength = (s.positions[w] - s.positions[u]).Norm();
                 to[fill[u]] = w, length[fill[u]++] = edgeLength;
                 to[fill[w]] = u, length[fill[w]++] = edgeLength;
@@ -193,7 +195,8 @@ private:
     void FindInteriors()
     {
         interiorOf_.assign(s_.VertexCount(), -1);
-        for (int v = 0; v < s_.VertexCount(); ++v)
+        ProgressCounter progress;
+        for (int v = 0; v < s_.VertexCount(); ++v, progress.Count())
             for (int k = s_.vertexFaceOffset[v]; k < s_.vertexFaceOffset[v + 1]; ++k)
                 interiorOf_[v] = s_.faceCell[s_.vertexFaces[k]];
         for (const std::vector<int> &loop : s_.cellLoop)

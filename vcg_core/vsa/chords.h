@@ -138,7 +138,8 @@ inline double ChordDeviationBound(const MeshingSurface &s, const std::vector<Pro
 {
     if (!(factor > 0)) return std::numeric_limits<double>::infinity();
     double planeError = 0;
-    for (int f = 0; f < s.FaceCount(); ++f) {
+    ProgressCounter progress;
+    for (int f = 0; f < s.FaceCount(); ++f, progress.Count()) {
         const Proxy &proxy = proxies[s.faceRegion[f]];
         for (int v : s.faces[f])
             planeError = std::max(planeError, std::abs((s.positions[v] - proxy.point) * proxy.normal));

@@ -439,7 +439,8 @@ inline double PairGridMargin(const IndexedMesh &im, double clearance)
 inline std::vector<FaceShape> ShapesOfFaces(const IndexedMesh &im, const std::vector<char> &degenerate)
 {
     std::vector<FaceShape> shape(im.faces.size());
-    for (int f = 0; f < im.FaceCount(); ++f)
+    ProgressCounter progress;
+    for (int f = 0; f < im.FaceCount(); ++f, progress.Count())
         if (!degenerate[f]) shape[f] = ShapeOfFace(im, f);
     return shape;
 }

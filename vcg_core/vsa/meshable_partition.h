@@ -113,7 +113,8 @@ struct TrialSetup
         grid = std::make_unique<SurfaceGrid>(s.positions, s.faces);
         gapTest = std::make_unique<ChordGapTest>(s.positions, s.faces, once.chordGapThreshold, grid.get());
         normal.resize(s.FaceCount());
-        for (int f = 0; f < s.FaceCount(); ++f) {
+        ProgressCounter progress;
+        for (int f = 0; f < s.FaceCount(); ++f, progress.Count()) {
             const auto &t = s.faces[f];
             normal[f] = (s.positions[t[1]] - s.positions[t[0]]) ^ (s.positions[t[2]] - s.positions[t[0]]);
         }
@@ -141,7 +142,9 @@ inline void MeasureFacingAway(const MeshingSurface &s, const MeshingPass &pass, 
 {
     const int regionCount = int(trial.fault.size());
     std::vector<double> area(regionCount, 0), away(regionCount, 0);
+    ProgressCounter progress;
     for (size_t t = 0; t < pass.triangles.size(); ++t) {
+        progress.Count(4 * kNearestFaceItems);
         const int r = s.cellRegion[pass.triangleCell[t]];
         const Point3d &a = pass.positions[pass.triangles[t][0]], &b = pass.positions[pass.triangles[t][1]],
                       &c = pass.positions[pass.triangles[t][2]];
@@ -220,7 +223,9 @@ inline void MeasureStray(const MeshingSurface &s, const MeshingPass &pass, const
     const std::vector<double> fit = RegionFit(s, proxies);
     const std::vector<char> inside = InsideRegion(s);
     std::vector<char> measured(s.VertexCount(), 0);
+    ProgressCounter progress;
     for (int f = 0; f < s.FaceCount(); ++f) {
+        progress.Count();
         const int r = s.faceRegion[f];
         for (int v : s.faces[f]) {
             if (!inside[v] || measured[v]) continue;
@@ -248,7 +253,9 @@ inline void ChooseSplitFaces(const MeshingSurface &s, const MeshingPass &pass, c
     for (int f = 0; f < s.FaceCount(); ++f)
         if (seeds[s.faceRegion[f]] == s.sourceFace[f]) seedCell[s.faceRegion[f]] = s.faceCell[f];
     std::vector<double> farthest(regionCount, -1);
+    ProgressCounter progress;
     for (int f = 0; f < s.FaceCount(); ++f) {
+        progress.Count();
         const int r = s.faceRegion[f];
         if (trial.fault[r] == RegionFault::None) continue;
         const Point3d c = centroid(s.positions, s.faces[f]);
@@ -351,7 +358,7 @@ MeshablePartitionReport MakePartitionMeshable(Approximation &approximation, cons
     for (int round = 0;; ++round) {
         const double share = (100 - detail::kTrialSetupEnd) / (param.maxRounds + 1);
         progress.Step(detail::kTrialSetupEnd + share * round, detail::kTrialSetupEnd + share * (round + 1),
-                      detail::kTrialItems * faces);
+                      (detail::kTrialItems + (round == 0 ? detail::kInputPairsItems : 0)) * faces);
         const detail::RegionTrial trial = detail::TrialMeshRegions<CoordType>(
             approximation.Mesh(), input, approximation.CurrentPartition(), approximation.SeedFaces(), param);
         const std::vector<int> regions = detail::RegionsToSplit(trial, approximation.CurrentPartition());

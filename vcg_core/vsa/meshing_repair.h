@@ -207,7 +207,9 @@ public:
     {
         std::vector<char> fresh(in_.FaceCount(), 0);
         std::vector<int> freshFaces;
+        ProgressCounter progress;
         for (int f = 0; f < s.FaceCount(); ++f) {
+            progress.Count();
             const int source = s.sourceFace[f];
             if (cells[s.faceCell[f]] && !tested_[source]) {
                 fresh[source] = tested_[source] = 1;
@@ -220,6 +222,7 @@ public:
         }
         std::vector<int> metFrom(freshFaces.empty() ? 0 : in_.FaceCount(), -1);
         for (int f : freshFaces) {
+            progress.Count();
             if (degenerate_[f]) continue;
             ForEachIntersectingFace(
                 in_, shape_, *grid_, f, metFrom, [&](int g) { return fresh[g] && g < f; },  // tested from g
@@ -304,7 +307,7 @@ public:
     /// repairRounds or the repair diverges (see kRepairPatience).
     void Repair()
     {
-        Step(kFirstPassFrom, kRepairFrom, "VSA meshing: anchors and triangulation");
+        Step(kFirstPassFrom, kRepairFrom, kFirstPassItems, "VSA meshing: anchors and triangulation");
         best_.pass = RunPass(nullptr);
         if (param_.repairRounds > 0) best_.defects = FindDefects(best_.pass, clearance_);
         best_.requiredAnchors = requiredAnchors_;
@@ -314,7 +317,7 @@ public:
             if (round_ - 1 - best_.repairRound >= kRepairPatience &&
                 defects_.Count() >= kRepairDivergence * best_.defects.Count())
                 break;
-            Step(RoundFrom(round_), RoundFrom(round_ + 1), "VSA meshing: repairing folds and self-intersections");
+            Step(RoundFrom(round_), RoundFrom(round_ + 1), 1, "VSA meshing: repairing folds and self-intersections");
             const MeshingPass &previous = round_ == 1 ? best_.pass : latest_;  // latest_: none yet
             if (RespondToDefects(s_, previous, defects_, requiredAnchors_, pinnedAnchors_) == 0) break;
             MeshingPass next = RunPass(&previous);
@@ -339,7 +342,7 @@ public:
         requiredAnchors_ = best_.requiredAnchors;
         pinnedAnchors_ = best_.pinnedAnchors;
         for (int last = round_ + param_.repairRounds; round_ < last && defects_.HasPairs(); ++round_) {
-            Step(RoundFrom(round_), RoundFrom(round_ + 1), "VSA meshing: keeping input faces against self-intersections");
+            Step(RoundFrom(round_), RoundFrom(round_ + 1), 1, "VSA meshing: keeping input faces against self-intersections");
             const std::vector<char> flagged = CellsOfIntersectingFaces(s_, latest_, defects_);
             std::vector<char> excluded = inputIntersections_.CellsAmong(s_, flagged);
             const std::vector<char> degenerate = inputIntersections_.CellsWithDegenerateFaces(s_, flagged);
@@ -381,10 +384,10 @@ private:
         return kRepairFrom + (kRepairTo - kRepairFrom) * std::min(1.0, (round - 1) / (2.0 * param_.repairRounds));
     }
 
-    /// The next pass, one tick per face of the surface (RunMeshingPass), moves the bar from `from` to `to`.
-    void Step(double from, double to, const char *text)
+    /// The next pass, `itemsPerFace` ticks per face of the surface, moves the bar from `from` to `to`.
+    void Step(double from, double to, double itemsPerFace, const char *text)
     {
-        if (progress_) progress_->Step(from, to, s_.FaceCount(), text);
+        if (progress_) progress_->Step(from, to, itemsPerFace * s_.FaceCount(), text);
     }
 
     /// The last pass becomes the best, from repair round `round`.

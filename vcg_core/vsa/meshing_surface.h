@@ -331,7 +331,9 @@ inline void MeasureCells(MeshingSurface &s)
     s.cellAreaVector.assign(s.CellCount(), Point3d(0, 0, 0));
     s.cellDoubleArea.assign(s.CellCount(), 0);
     s.cellCentroid.assign(s.CellCount(), Point3d(0, 0, 0));
+    ProgressCounter progress;
     for (int c = 0; c < s.CellCount(); ++c) {
+        progress.Count(s.cellFaceOffset[c + 1] - s.cellFaceOffset[c]);
         Point3d centroid(0, 0, 0);
         for (int k = s.cellFaceOffset[c]; k < s.cellFaceOffset[c + 1]; ++k) {
             const auto &t = s.faces[s.cellFaces[k]];
@@ -349,7 +351,8 @@ inline void MarkBoundaryVertices(MeshingSurface &s)
 {
     std::vector<int> boundaryHalfEdges(s.VertexCount(), 0);  // border edges count twice
     s.onBorder.assign(s.VertexCount(), 0);
-    for (int f = 0; f < s.FaceCount(); ++f)
+    ProgressCounter progress;
+    for (int f = 0; f < s.FaceCount(); ++f, progress.Count())
         for (int i = 0; i < 3; ++i) {
             const int g = s.neighbors[f][i], a = s.faces[f][i], b = s.faces[f][(i + 1) % 3];
             if (g >= 0 && s.faceCell[g] == s.faceCell[f]) continue;
@@ -376,7 +379,9 @@ inline bool TraceCellLoops(MeshingSurface &s, std::string &error)
     s.cellLoop.assign(cellCount, {});
     s.cellLoopOther.assign(cellCount, {});
     std::vector<int> lastSeenInCell(s.positions.size(), -1);
+    ProgressCounter progress;
     for (int c = 0; c < cellCount; ++c) {
+        progress.Count(s.cellFaceOffset[c + 1] - s.cellFaceOffset[c]);
         int startFace = -1, startEdge = -1, boundaryEdges = 0;
         for (int k = s.cellFaceOffset[c]; k < s.cellFaceOffset[c + 1]; ++k) {
             const int f = s.cellFaces[k];
@@ -479,7 +484,9 @@ inline bool BuildSurfaceTopology(const IndexedMesh &im, MeshingSurface &s, std::
         }
     IndexedMesh kept;
     kept.positions = im.positions;
+    ProgressCounter progress;
     for (int f = 0; f < im.FaceCount(); ++f) {
+        progress.Count();
         const auto &t = im.faces[f];
         if (RepeatsVertex(t)) {
             ++s.ignoredFaces;

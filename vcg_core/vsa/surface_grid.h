@@ -51,14 +51,14 @@ public:
     /// include them, so that faces closer than twice the margin share a cell and their boxes touch.
     SurfaceGrid(const std::vector<Point3d> &positions, const std::vector<std::array<int, 3>> &faces,
                 const std::vector<char> &skip = {}, double margin = 0)
-        : positions_(positions), faces_(faces), faceBox_(faces.size()), margin_(margin)
+        : positions_(positions), faces_(faces), margin_(margin)
     {
         size_t inGrid = 0;
-        for (size_t f = 0; f < faces.size(); ++f) {
-            for (int v : faces[f]) faceBox_[f].Add(positions[v]);
-            if (margin > 0) faceBox_[f].Offset(margin);
+        ProgressCounter progress;
+        for (int f = 0; f < int(faces.size()); ++f) {
+            progress.Count();
             if (!skip.empty() && skip[f]) continue;
-            box_.Add(faceBox_[f]);
+            box_.Add(FaceBox(f));
             ++inGrid;
         }
         cellOffset_.assign(2, 0);  // one empty cell, unless there is something to bucket
@@ -78,7 +78,6 @@ public:
             cellSize_[i] = box_.Dim()[i] / dim_[i];
         }
         std::vector<int> faceOfEntry;
-        ProgressCounter progress;
         for (int f = 0; f < int(faces.size()); ++f) {
             progress.Count();
             if (skip.empty() || !skip[f]) CellsCrossedBy(f, [&](int cell) {
@@ -88,7 +87,10 @@ public:
             faceCellOffset_[f + 1] = int(faceCells_.size());
         }
         detail::BuildOffsets(faceCells_, dim_[0] * dim_[1] * dim_[2], cellOffset_, cellFaces_);
-        for (int &entry : cellFaces_) entry = faceOfEntry[entry];
+        for (int &entry : cellFaces_) {
+            entry = faceOfEntry[entry];
+            progress.Count();
+        }
     }
 
     /// Calls visit(cell index) for each cell face f is in (see CellsCrossedBy); for a skipped
@@ -115,7 +117,14 @@ public:
     {
         return {cellFaces_.data() + cellOffset_[cell], cellFaces_.data() + cellOffset_[cell + 1]};
     }
-    const Box3d &FaceBox(int f) const { return faceBox_[f]; }
+    /// Face f's box, grown by the margin: computed when asked, as storing it would cost 48 bytes a face.
+    Box3d FaceBox(int f) const
+    {
+        Box3d box;
+        for (int v : faces_[f]) box.Add(positions_[v]);
+        if (margin_ > 0) box.Offset(margin_);
+        return box;
+    }
 
     /// Whether some face (as a filled triangle) lies within `radius` of p. Cells are visited
     /// in shells around p's own, so a point on or near the surface answers after a cell or two.
@@ -162,7 +171,7 @@ public:
                         if (!wholeRow && std::abs(x - center[0]) != s) continue;
                         const auto [first, last] = FacesIn(CellIndex(x, y, z));
                         for (const int *face = first; face != last; ++face) {
-                            if (BoxSquaredDistance(faceBox_[*face], p) >= best * best) continue;  // the cheap test
+                            if (BoxSquaredDistance(FaceBox(*face), p) >= best * best) continue;  // the cheap test
                             const std::array<int, 3> &t = faces_[*face];
                             double distance;
                             Point3d closest;
@@ -194,8 +203,9 @@ private:
     template <class Visit>
     void CellsCrossedBy(int f, Visit visit, bool occupiedOnly = false) const
     {
-        if (box_.IsNull() || !BoxesTouch(faceBox_[f], box_)) return;
-        const Point3i lo = CellOf(faceBox_[f].min), hi = CellOf(faceBox_[f].max);
+        const Box3d faceBox = FaceBox(f);
+        if (box_.IsNull() || !BoxesTouch(faceBox, box_)) return;
+        const Point3i lo = CellOf(faceBox.min), hi = CellOf(faceBox.max);
         // A small box has few cells to spare: not worth the test.
         const bool testPlane = (hi[0] - lo[0] + 1) * (hi[1] - lo[1] + 1) * (hi[2] - lo[2] + 1) > 8;
         const Point3d &corner = positions_[faces_[f][0]];
@@ -226,7 +236,7 @@ private:
         const auto [first, last] = FacesIn(cell);
         for (const int *face = first; face != last; ++face) {
             const int f = *face;
-            if (!BoxesTouch(faceBox_[f], query)) continue;
+            if (!BoxesTouch(FaceBox(f), query)) continue;
             const std::array<int, 3> &t = faces_[f];
             const Triangle3<double> triangle(positions_[t[0]], positions_[t[1]], positions_[t[2]]);
             double distance;
@@ -239,7 +249,6 @@ private:
 
     const std::vector<Point3d> &positions_;
     const std::vector<std::array<int, 3>> &faces_;
-    std::vector<Box3d> faceBox_;  ///< grown by margin_
     double margin_;
     Box3d box_;
     Point3i dim_{1, 1, 1};

@@ -27,15 +27,18 @@ constexpr double kRoundItems = 8;   ///< a doubling round's insertions, which to
 
 // Meshable partition (meshable_partition.h).
 constexpr double kTrialSetupEnd = 5;     ///< percent of the stage's bar for setting up the trials, about one trial's work
-constexpr double kTrialSetupItems = 4;   ///< progress items per face of it: splitting fans, two grids, a copy
-constexpr double kTrialItems = 3;        ///< per face of a trial: its cells, its pass, choosing split faces
+constexpr double kTrialSetupItems = 30;  ///< progress items per face of it (measured at 3.3M): the surface, its grid, a copy, the normals
+constexpr double kTrialItems = 13;       ///< per face of a trial: its cells, the chord bound, its pass, the stray test, choosing split faces, the split
+constexpr double kInputPairsItems = 12;  ///< per face, in the first trial only: the grid and shapes of the input's faces for their own intersections
+constexpr int kNearestFaceItems = 128;   ///< a nearest-face query of the facing-away test takes about as long as 128 faces' share of a pass
 constexpr double kFacingAwayShare = 0.01;  ///< a region faces away past this share of its area facing the input's back
 constexpr double kStrayAllowance = 2e-3;   ///< of the diagonal: projected anchors move even exact planes' triangles
 
-// The final meshing's progress (meshing.h), in progress items per face, as kTrialItems; a pass ticks once per face.
-constexpr double kMeshingSetupItems = 3;  ///< cutting regions into discs, the gap test's grid, the input's intersections
+// The final meshing's progress (meshing.h, meshing_repair.h), in progress items, as kTrialItems.
+constexpr double kMeshingSetupItems = 30; ///< per input face (measured at 3.3M): the surface, its cells, the chord bound, the gap test's grid
 constexpr double kHalvingPasses = 4;      ///< a halving round meshes the whole surface again, with repair passes
-constexpr double kCheckItems = 3;         ///< per output face: indexing the written mesh, then checking it
+constexpr double kFirstPassItems = 8;     ///< per surface face: the first pass's anchors, chords and cell floodings (a repair pass ticks once)
+constexpr double kCheckItems = 20;        ///< per output face: indexing the written mesh, then checking it
 
 // Chords and cells (chords.h, cell_triangulation.h).
 constexpr int kChordGapSamples = 8;  ///< points the gap test tries along a chord: it strays over a hole, not a point
