@@ -537,8 +537,8 @@ private:
         FitRegions(metric, state_, only);
     }
 
-    template <class Metric>
     /// `faces`: the region's, ascending.
+    template <class Metric>
     void SplitRegion(const Metric &metric, PartitionWorkspace<Metric> &ws, int region, int seed,
                      const std::vector<int> &faces)
     {
