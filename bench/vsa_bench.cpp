@@ -213,6 +213,7 @@ int main(int argc, char **argv)
         progressGaps.Start("meshable");
         const MeshablePartitionReport meshable =
             MakePartitionMeshable<BMesh::CoordType>(approximation, o.meshing, o.meshable, &NoteProgress);
+        const double peakRssMeshableMb = vsa_bench::PeakRssMb();
         progressGaps.Start("meshing");
         const ApproximationResult partition = approximation.Result();
         BMesh output;
@@ -232,6 +233,7 @@ int main(int argc, char **argv)
             .Add("peak_rss_mb", peakRssMb)
             .Add("rss_after_load_mb", rssAfterLoadMb)
             .Add("peak_rss_partition_mb", peakRssPartitionMb)
+            .Add("peak_rss_meshable_mb", peakRssMeshableMb)
             .Add("threads", vcg::tri::vsa::MaxThreads())
             .Add("seed", o.param.randomSeed)
             .Add("iterations", o.param.maxIterations)
