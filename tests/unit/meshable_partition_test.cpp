@@ -166,10 +166,21 @@ TEST(MeshablePartition, TrialsInTurnJudgeAsTrialsAfresh)
     const MeshingParam meshing;
     const MeshablePartitionParam meshable;
     detail::TrialSetup<vcg::Point3f> inTurn(approximation.Mesh(), meshing);
+    int kept = 0;  // triangles whose facing-away samples a trial took from the one before
     for (int round = 0; round < 4; ++round) {
         const Partition &partition = approximation.CurrentPartition();
+        const detail::FacingAwaySamples previous = inTurn.facingAway;
         const detail::RegionTrial a = detail::TrialMeshRegions<vcg::Point3f>(approximation.Mesh(), inTurn, partition,
                                                                       approximation.SeedFaces(), meshable);
+        // Every triangle's samples are kept for the next trial, and after the splits some are
+        // read from the last one's instead of measured again.
+        const detail::MeshingPass &pass = inTurn.latest->Best().pass;
+        for (const auto &t : pass.triangles) {
+            const detail::FacingAwaySamples::Corners corners{pass.positions[t[0]], pass.positions[t[1]],
+                                                             pass.positions[t[2]]};
+            EXPECT_GE(inTurn.facingAway.Find(corners), 0) << "round " << round;
+            kept += previous.Find(corners) >= 0;
+        }
         detail::TrialSetup<vcg::Point3f> afresh(approximation.Mesh(), meshing);
         const detail::RegionTrial b = detail::TrialMeshRegions<vcg::Point3f>(approximation.Mesh(), afresh, partition,
                                                                       approximation.SeedFaces(), meshable);
@@ -182,6 +193,7 @@ TEST(MeshablePartition, TrialsInTurnJudgeAsTrialsAfresh)
         ASSERT_FALSE(regions.empty()) << "round " << round;  // the box's rings need splits
         approximation.Split(regions.front(), a.splitFace[regions.front()]);
     }
+    EXPECT_GT(kept, 0);
 }
 
 /// An unwelded mesh (every face its own vertices, as STL files have them) is refused with the
@@ -224,6 +236,47 @@ TEST(MeshablePartition, NearestFaceMatchesBruteForce)
         ASSERT_GE(nearest, 0);
         EXPECT_EQ(distance(nearest), best) << "query " << q;
     }
+}
+
+/// A hint (a face near the point) only bounds the search: the answer is the same face as
+/// without it, also where faces tie (points on the torus's vertices and edges).
+TEST(MeshablePartition, NearestFaceIsTheSameWithAHint)
+{
+    TMesh torus;
+    vsa_test::MakeTorus(torus, 2, 0.5f, 24, 12);
+    const IndexedMesh im = BuildIndexedMesh(torus);
+    const SurfaceGrid grid(im.positions, im.faces);
+    std::mt19937 random(5);
+    std::uniform_real_distribution<double> coordinate(-3.5, 3.5);
+    std::uniform_int_distribution<int> anyFace(0, im.FaceCount() - 1);
+    std::vector<vcg::Point3d> points;
+    for (int q = 0; q < 300; ++q) points.emplace_back(coordinate(random), coordinate(random), coordinate(random) / 3);
+    for (int f = 0; f < im.FaceCount(); f += 7) {
+        const auto &t = im.faces[f];
+        points.push_back(im.positions[t[0]]);
+        points.push_back((im.positions[t[0]] + im.positions[t[1]]) / 2);
+    }
+    int ties = 0;
+    for (const vcg::Point3d &p : points) {
+        const int nearest = grid.NearestFace(p);
+        ASSERT_GE(nearest, 0);
+        for (int hint : {nearest, anyFace(random), im.neighbors[nearest][0]}) {
+            const int found = grid.NearestFace(p, hint);
+            EXPECT_EQ(found, nearest) << "hint " << hint;
+            ties += hint != nearest && found == nearest && hint >= 0 && [&] {
+                const auto &t = im.faces[hint];
+                double d, dn;
+                vcg::Point3d c;
+                vcg::TrianglePointDistance(
+                    vcg::Triangle3<double>(im.positions[t[0]], im.positions[t[1]], im.positions[t[2]]), p, d, c);
+                const auto &u = im.faces[nearest];
+                vcg::TrianglePointDistance(
+                    vcg::Triangle3<double>(im.positions[u[0]], im.positions[u[1]], im.positions[u[2]]), p, dn, c);
+                return d == dn;
+            }();
+        }
+    }
+    EXPECT_GT(ties, 0);  // hints as near as the answer, which must not win over the first found
 }
 
 /// Two distinct vertices at one position, joined by an edge with two faces without area on it

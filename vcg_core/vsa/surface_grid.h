@@ -5,6 +5,7 @@
 #define VSA_SURFACE_GRID_H
 
 #include <vsa/indexed_mesh.h>
+#include <vsa/tuning.h>
 
 #include <vcg/space/box3.h>
 #include <vcg/space/distance3.h>
@@ -151,7 +152,10 @@ public:
 
     /// The face nearest to p (as a filled triangle; ties: the first found), or -1 for an empty
     /// grid. Shells of cells around p's own are visited until none can hold a nearer face.
-    int NearestFace(const Point3d &p) const
+    /// `hint`: a face near p (the answer for a point close by), or -1. Its distance bounds the
+    /// search from the start, so that far faces are skipped by their boxes alone; the answer is
+    /// the same with or without it, ties included.
+    int NearestFace(const Point3d &p, int hint = -1) const
     {
         if (box_.IsNull()) return -1;
         const Point3i center = CellOf(p);
@@ -160,7 +164,11 @@ public:
         int shells = 0;
         for (int i = 0; i < 3; ++i) shells = std::max({shells, center[i], dim_[i] - 1 - center[i]});
         int nearest = -1;
-        double best = std::numeric_limits<double>::infinity();
+        // A little above the hint's distance, beyond any rounding of the box test: every face as
+        // near as the hint is still tested, so the first found at the least distance wins, as
+        // without a hint.
+        double best = hint >= 0 ? DistanceTo(hint, p) * (1 + detail::kHintSlack) + detail::kHintSlack * step
+                                : std::numeric_limits<double>::infinity();
         for (int s = 0; s <= shells; ++s) {
             // Every cell of shell s is at least (s - 1) cells away from p, and as far as the box.
             if (nearest >= 0 && std::max(outside, (s - 1) * step) > best) break;
@@ -172,11 +180,7 @@ public:
                         const auto [first, last] = FacesIn(CellIndex(x, y, z));
                         for (const int *face = first; face != last; ++face) {
                             if (BoxSquaredDistance(FaceBox(*face), p) >= best * best) continue;  // the cheap test
-                            const std::array<int, 3> &t = faces_[*face];
-                            double distance;
-                            Point3d closest;
-                            TrianglePointDistance(Triangle3<double>(positions_[t[0]], positions_[t[1]], positions_[t[2]]),
-                                                  p, distance, closest);
+                            const double distance = DistanceTo(*face, p);
                             if (distance < best) best = distance, nearest = *face;
                         }
                     }
@@ -186,6 +190,15 @@ public:
     }
 
 private:
+    double DistanceTo(int face, const Point3d &p) const
+    {
+        const std::array<int, 3> &t = faces_[face];
+        double distance;
+        Point3d closest;
+        TrianglePointDistance(Triangle3<double>(positions_[t[0]], positions_[t[1]], positions_[t[2]]), p, distance,
+                              closest);
+        return distance;
+    }
     static double BoxSquaredDistance(const Box3d &box, const Point3d &p)
     {
         double d = 0;
