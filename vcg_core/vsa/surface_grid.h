@@ -150,11 +150,11 @@ public:
         return false;
     }
 
-    /// The face nearest to p (as a filled triangle; ties: the first found), or -1 for an empty
-    /// grid. Shells of cells around p's own are visited until none can hold a nearer face.
+    /// The face nearest to p (as a filled triangle; ties: the lowest index), or -1 for an empty
+    /// grid. Shells of cells around p's own are visited until none can hold a nearer face;
+    /// cells, rows and faces farther than the nearest so far are skipped by their boxes.
     /// `hint`: a face near p (the answer for a point close by), or -1. Its distance bounds the
-    /// search from the start, so that far faces are skipped by their boxes alone; the answer is
-    /// the same with or without it, ties included.
+    /// search from the start; the answer is the same with or without it.
     int NearestFace(const Point3d &p, int hint = -1) const
     {
         if (box_.IsNull()) return -1;
@@ -164,27 +164,43 @@ public:
         int shells = 0;
         for (int i = 0; i < 3; ++i) shells = std::max({shells, center[i], dim_[i] - 1 - center[i]});
         int nearest = -1;
-        // A little above the hint's distance, beyond any rounding of the box test: every face as
-        // near as the hint is still tested, so the first found at the least distance wins, as
-        // without a hint.
-        double best = hint >= 0 ? DistanceTo(hint, p) * (1 + detail::kHintSlack) + detail::kHintSlack * step
-                                : std::numeric_limits<double>::infinity();
+        double best = hint >= 0 ? DistanceTo(hint, p) : std::numeric_limits<double>::infinity();
+        const auto gap = [&](int axis, int index) {  // from p to the slab of cells `index` on `axis`, squared
+            const double low = box_.min[axis] + index * cellSize_[axis];
+            const double g = std::max({low - p[axis], p[axis] - low - cellSize_[axis], 0.0});
+            return g * g;
+        };
+        // Boxes are skipped a little beyond `best`, past any rounding of their distances, so that
+        // every face as near as the nearest so far (or the hint) is tested.
+        const auto within = [&](double squaredGap) {
+            const double reach = best * (1 + detail::kBoxSlack) + detail::kBoxSlack * step;
+            return squaredGap <= reach * reach;
+        };
+        const auto visit = [&](int x, int y, int z) {
+            const auto [first, last] = FacesIn(CellIndex(x, y, z));
+            for (const int *face = first; face != last; ++face) {
+                if (!within(BoxSquaredDistance(FaceBox(*face), p))) continue;  // the cheap test
+                const double distance = DistanceTo(*face, p);
+                if (distance < best || (distance == best && (nearest < 0 || *face < nearest)))
+                    best = distance, nearest = *face;
+            }
+        };
         for (int s = 0; s <= shells; ++s) {
             // Every cell of shell s is at least (s - 1) cells away from p, and as far as the box.
             if (nearest >= 0 && std::max(outside, (s - 1) * step) > best) break;
-            for (int z = std::max(0, center[2] - s); z <= std::min(dim_[2] - 1, center[2] + s); ++z)
+            for (int z = std::max(0, center[2] - s); z <= std::min(dim_[2] - 1, center[2] + s); ++z) {
+                const double gz = gap(2, z);
+                if (!within(gz)) continue;
                 for (int y = std::max(0, center[1] - s); y <= std::min(dim_[1] - 1, center[1] + s); ++y) {
+                    const double gzy = gz + gap(1, y);
+                    if (!within(gzy)) continue;
+                    // A row inside the shell has only its two ends on it.
                     const bool wholeRow = std::abs(z - center[2]) == s || std::abs(y - center[1]) == s;
-                    for (int x = std::max(0, center[0] - s); x <= std::min(dim_[0] - 1, center[0] + s); ++x) {
-                        if (!wholeRow && std::abs(x - center[0]) != s) continue;
-                        const auto [first, last] = FacesIn(CellIndex(x, y, z));
-                        for (const int *face = first; face != last; ++face) {
-                            if (BoxSquaredDistance(FaceBox(*face), p) >= best * best) continue;  // the cheap test
-                            const double distance = DistanceTo(*face, p);
-                            if (distance < best) best = distance, nearest = *face;
-                        }
-                    }
+                    const int stride = wholeRow || s == 0 ? 1 : 2 * s;
+                    for (int x = center[0] - s; x <= center[0] + s; x += stride)
+                        if (x >= 0 && x < dim_[0] && within(gzy + gap(0, x))) visit(x, y, z);
                 }
+            }
         }
         return nearest;
     }
