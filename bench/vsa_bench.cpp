@@ -214,6 +214,7 @@ int main(int argc, char **argv)
         const MeshablePartitionReport meshable =
             MakePartitionMeshable<BMesh::CoordType>(approximation, o.meshing, o.meshable, &NoteProgress);
         const double peakRssMeshableMb = vsa_bench::PeakRssMb();
+        const double tMeshable = clock.Seconds();
         progressGaps.Start("meshing");
         const ApproximationResult partition = approximation.Result();
         BMesh output;
@@ -227,6 +228,7 @@ int main(int argc, char **argv)
             .Add("t_iterations_s", tIterations)
             .Add("iterations_run", iterations)
             .Add("t_mesh_s", tMesh)
+            .Add("t_meshable_s", tMeshable)
             .Add("t_total_s", tSetup + tSeed + tIterations + tMesh)
             .Add("energy", partition.energy)
             .Add("energy_asked", energyAsked)
@@ -263,6 +265,13 @@ int main(int argc, char **argv)
             .Add("pieces_carved", meshing.piecesCarved)
             .Add("close_pairs", meshing.closePairs)
             .Add("regions_final", meshable.proxiesFinal)
+            .Add("meshable_rounds", meshable.rounds)
+            .Add("regions_left", meshable.regionsLeft)
+            .Add("splits_strays", meshable.splits[int(RegionFault::Strays)])
+            .Add("splits_intersects", meshable.splits[int(RegionFault::Intersects)])
+            .Add("splits_folds", meshable.splits[int(RegionFault::Folds)])
+            .Add("splits_faces_away", meshable.splits[int(RegionFault::FacesAway)])
+            .Add("splits_not_disc", meshable.splits[int(RegionFault::NotDisc)])
             .Add("collapsed_edges", collapsed);
         const int regionsOut = int(std::set<int>(meshing.faceRegion.begin(), meshing.faceRegion.end()).size());
         const vsa_bench::PolygonLabels polygons = vsa_bench::AddOutputQualityKeys(json, m, output, regionsOut);
