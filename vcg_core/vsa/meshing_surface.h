@@ -292,14 +292,19 @@ private:
 inline void BuildCells(MeshingSurface &s)
 {
     const int faceCount = s.FaceCount();
-    std::vector<int> previousCell(faceCount, -1);
+    std::vector<int> previousCell;
     if (s.faceCell.size() == size_t(faceCount)) previousCell.swap(s.faceCell);
+    else previousCell.assign(faceCount, -1);
     const std::vector<int> previousOffset = std::move(s.cellFaceOffset);
     s.faceCell.assign(faceCount, -1);
     s.cellRegion.clear();
     s.nonDiscRegions = 0;
+    // Each per-face array is fresh memory, hundreds of megabytes at millions of faces: the
+    // ticks keep the progress bar moving between them.
+    ProgressTick(faceCount);
     DiscGrower grower(s);
     std::vector<char> seen(faceCount, 0);
+    ProgressTick(faceCount);
     ProgressCounter progress;
     for (int start = 0; start < faceCount; ++start) {
         if (seen[start]) continue;
@@ -528,7 +533,8 @@ inline bool AssignRegions(MeshingSurface &s, const std::vector<int> &faceRegion,
 {
     s.regionCount = regionCount;
     s.faceRegion.resize(s.FaceCount());
-    for (int f = 0; f < s.FaceCount(); ++f) s.faceRegion[f] = faceRegion[s.sourceFace[f]];
+    ProgressCounter progress;
+    for (int f = 0; f < s.FaceCount(); ++f, progress.Count()) s.faceRegion[f] = faceRegion[s.sourceFace[f]];
     s.facePiece.assign(s.FaceCount(), 0);
     return detail::BuildCellsAndLoops(s, error);
 }

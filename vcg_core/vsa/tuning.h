@@ -28,7 +28,7 @@ constexpr double kRoundItems = 8;   ///< a doubling round's insertions, which to
 // Meshable partition (meshable_partition.h).
 constexpr double kTrialSetupEnd = 5;     ///< percent of the stage's bar for setting up the trials, about one trial's work
 constexpr double kTrialSetupItems = 30;  ///< progress items per face of it (measured at 3.3M): the surface, its grid, a copy, the normals
-constexpr double kTrialItems = 13;       ///< per face of a trial: its cells, the chord bound, its pass, the stray test, choosing split faces, the split
+constexpr double kTrialItems = 16;       ///< per face of a trial: its regions and cells, the chord bound, its pass, the stray test, choosing split faces, the split
 constexpr double kInputPairsItems = 12;  ///< per face, in the first trial only: the grid and shapes of the input's faces for their own intersections
 constexpr int kNearestFaceItems = 128;   ///< a nearest-face query of the facing-away test takes about as long as 128 faces' share of a pass
 constexpr double kFacingAwayShare = 0.01;  ///< a region faces away past this share of its area facing the input's back
@@ -36,7 +36,7 @@ constexpr double kStrayAllowance = 2e-3;   ///< of the diagonal: projected ancho
 constexpr double kBoxSlack = 1e-9;         ///< the nearest-face search skips boxes this much beyond its best distance: far above rounding
 
 // The final meshing's progress (meshing.h, meshing_repair.h), in progress items, as kTrialItems.
-constexpr double kMeshingSetupItems = 30; ///< per input face (measured at 3.3M): the surface, its cells, the chord bound, the gap test's grid
+constexpr double kMeshingSetupItems = 33; ///< per input face (measured at 3.3M): the surface, its regions and cells, the chord bound, the gap test's grid
 constexpr double kHalvingPasses = 4;      ///< a halving round meshes the whole surface again, with repair passes
 constexpr double kFirstPassItems = 8;     ///< per surface face: the first pass's anchors, chords and cell floodings (a repair pass ticks once)
 constexpr double kCheckItems = 20;        ///< per output face: indexing the written mesh, then checking it
