@@ -111,7 +111,6 @@ public:
         return it == bits_.end() ? -1 : it->second;
     }
     void Add(const Corners &corners, int bits) { bits_.emplace(corners, uint8_t(bits)); }
-    void Clear() { bits_.clear(); }
     void Swap(FacingAwaySamples &other) { bits_.swap(other.bits_); }
 
 private:

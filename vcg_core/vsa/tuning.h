@@ -33,7 +33,9 @@ constexpr double kInputPairsItems = 12;  ///< per face, in the first trial only:
 constexpr int kNearestFaceItems = 128;   ///< a nearest-face query of the facing-away test takes about as long as 128 faces' share of a pass
 constexpr double kFacingAwayShare = 0.01;  ///< a region faces away past this share of its area facing the input's back
 constexpr double kStrayAllowance = 2e-3;   ///< of the diagonal: projected anchors move even exact planes' triangles
-constexpr double kBoxSlack = 1e-9;         ///< the nearest-face search skips boxes this much beyond its best distance: far above rounding
+
+// Grids (surface_grid.h).
+constexpr double kBoxSlack = 1e-9;  ///< the nearest-face search skips boxes this much beyond its best distance: far above rounding
 
 // The final meshing's progress (meshing.h, meshing_repair.h), in progress items, as kTrialItems.
 constexpr double kMeshingSetupItems = 33; ///< per input face (measured at 3.3M): the surface, its regions and cells, the chord bound, the gap test's grid
