@@ -169,18 +169,16 @@ TEST(MeshablePartition, TrialsInTurnJudgeAsTrialsAfresh)
     int kept = 0;  // triangles whose facing-away samples a trial took from the one before
     for (int round = 0; round < 4; ++round) {
         const Partition &partition = approximation.CurrentPartition();
-        const detail::FacingAwaySamples previous = inTurn.facingAway;
+        const detail::SampledTriangles previous = inTurn.sampled;
         const detail::RegionTrial a = detail::TrialMeshRegions<vcg::Point3f>(approximation.Mesh(), inTurn, partition,
                                                                       approximation.SeedFaces(), meshable);
         // Every triangle's samples are kept for the next trial, and after the splits some are
-        // read from the last one's instead of measured again.
+        // taken from the last one's instead of measured again.
         const detail::MeshingPass &pass = inTurn.latest->Best().pass;
-        for (const auto &t : pass.triangles) {
-            const detail::FacingAwaySamples::Corners corners{pass.positions[t[0]], pass.positions[t[1]],
-                                                             pass.positions[t[2]]};
-            EXPECT_GE(inTurn.facingAway.Find(corners), 0) << "round " << round;
-            kept += previous.Find(corners) >= 0;
-        }
+        EXPECT_EQ(inTurn.sampled.pass.triangles, pass.triangles) << "round " << round;
+        EXPECT_EQ(inTurn.sampled.awayBits.size(), pass.triangles.size()) << "round " << round;
+        for (int repeat : detail::RepeatedFaces(pass, inTurn.sampled.degenerate, previous.pass, previous.degenerate))
+            kept += repeat >= 0;
         detail::TrialSetup<vcg::Point3f> afresh(approximation.Mesh(), meshing);
         const detail::RegionTrial b = detail::TrialMeshRegions<vcg::Point3f>(approximation.Mesh(), afresh, partition,
                                                                       approximation.SeedFaces(), meshable);

@@ -14,11 +14,9 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
-#include <cstring>
 #include <memory>
 #include <sstream>
 #include <string>
-#include <unordered_map>
 #include <vector>
 
 namespace vcg {
@@ -96,40 +94,14 @@ struct RegionTrial
     std::vector<double> facingAway;  ///< per region, the share of its triangles' area that faces away
 };
 
-/// Which of a triangle's four samples (see MeasureFacingAway) face away, by the triangle's
-/// corners as placed: a region that the splits and its neighbours' splits left alone keeps its
-/// triangles from one trial to the next, and their samples need no grid queries again.
-class FacingAwaySamples
+/// The latest trial's triangles, to be found again in the next (see RepeatedFaces): a region
+/// that the splits and its neighbours' splits left alone keeps its triangles from one trial to
+/// the next, and their facing-away samples need no grid queries again.
+struct SampledTriangles
 {
-public:
-    using Corners = std::array<Point3d, 3>;
-
-    /// The samples' bits of `corners`, or -1 if they were not measured.
-    int Find(const Corners &corners) const
-    {
-        const auto it = bits_.find(corners);
-        return it == bits_.end() ? -1 : it->second;
-    }
-    void Add(const Corners &corners, int bits) { bits_.emplace(corners, uint8_t(bits)); }
-    void Swap(FacingAwaySamples &other) { bits_.swap(other.bits_); }
-
-private:
-    struct Hash
-    {
-        size_t operator()(const Corners &c) const
-        {
-            uint64_t h = 0x9e3779b97f4a7c15ull;
-            for (const Point3d &p : c)
-                for (int i = 0; i < 3; ++i) {
-                    uint64_t bits;
-                    std::memcpy(&bits, &p[i], sizeof bits);
-                    h = (h ^ bits) * 0x100000001b3ull;
-                    h ^= h >> 29;
-                }
-            return size_t(h);
-        }
-    };
-    std::unordered_map<Corners, uint8_t, Hash> bits_;
+    MeshingPass pass;  ///< positions, vertexSource and triangles only
+    std::vector<char> degenerate;  ///< per triangle, DegenerateFaceMask
+    std::vector<uint8_t> awayBits;  ///< per triangle, which of its four samples face away
 };
 
 /// What every round's trial meshing shares, set up once: the meshing surface, whose regions and
@@ -170,34 +142,33 @@ struct TrialSetup
     std::array<std::vector<Proxy>, 2> proxies;  ///< UsableProxies of each surface's regions
     std::unique_ptr<CellMesher<CoordType>> latest;
     int latestSurface = 1;  ///< the surface `latest` meshed, which the next trial leaves alone
-    FacingAwaySamples facingAway;  ///< of the latest trial's triangles
+    SampledTriangles sampled;  ///< the latest trial's
     int passes = 0;
 };
 
 /// Per region, the share of its triangles' area whose nearest input face (in `grid`, with its
 /// `normal`) points the other way (what shades dark where the input does not), from four
-/// samples per triangle. Triangles found in `samples` (the previous trial's) are not sampled
-/// again; `samples` is left with this pass's triangles.
-inline void MeasureFacingAway(const MeshingSurface &s, const MeshingPass &pass, const SurfaceGrid &grid,
-                              const std::vector<Point3d> &normal, FacingAwaySamples &samples, RegionTrial &trial)
+/// samples per triangle. Triangles of `sampled` (the previous trial's) are not sampled again;
+/// `sampled` is left with this pass's triangles (`degenerate` their mask).
+inline void MeasureFacingAway(const MeshingSurface &s, const MeshingPass &pass, const std::vector<char> &degenerate,
+                              const SurfaceGrid &grid, const std::vector<Point3d> &normal, SampledTriangles &sampled,
+                              RegionTrial &trial)
 {
     const int regionCount = int(trial.fault.size());
     std::vector<double> area(regionCount, 0), away(regionCount, 0);
-    FacingAwaySamples measured;
+    const std::vector<int> repeats = RepeatedFaces(pass, degenerate, sampled.pass, sampled.degenerate);
+    std::vector<uint8_t> awayBits(pass.triangles.size());
     ProgressCounter progress;
     int nearest = -1;  // the last sample's, a hint for the next: a cell's triangles come together
     for (size_t t = 0; t < pass.triangles.size(); ++t) {
         const int r = s.cellRegion[pass.triangleCell[t]];
-        const FacingAwaySamples::Corners corners{pass.positions[pass.triangles[t][0]],
-                                                 pass.positions[pass.triangles[t][1]],
-                                                 pass.positions[pass.triangles[t][2]]};
-        const Point3d &a = corners[0], &b = corners[1], &c = corners[2];
+        const Point3d &a = pass.positions[pass.triangles[t][0]], &b = pass.positions[pass.triangles[t][1]],
+                      &c = pass.positions[pass.triangles[t][2]];
         const Point3d n = (b - a) ^ (c - a);
         area[r] += n.Norm();
-        int bits = samples.Find(corners);
-        if (bits < 0) {
+        int bits = repeats[t] >= 0 ? sampled.awayBits[repeats[t]] : 0;
+        if (repeats[t] < 0) {
             progress.Count(4 * kNearestFaceItems);
-            bits = 0;
             int k = 0;
             for (const Point3d &p :
                  {(a + b + c) / 3.0, (a * 4 + b + c) / 6.0, (a + b * 4 + c) / 6.0, (a + b + c * 4) / 6.0}) {
@@ -208,9 +179,14 @@ inline void MeasureFacingAway(const MeshingSurface &s, const MeshingPass &pass, 
         }
         for (int k = 0; k < 4; ++k)  // one sample at a time, so the sums round as they always did
             if (bits >> k & 1) away[r] += n.Norm() / 4;
-        measured.Add(corners, bits);
+        awayBits[t] = uint8_t(bits);
     }
-    samples.Swap(measured);
+    sampled.pass = MeshingPass();
+    sampled.pass.positions = pass.positions;
+    sampled.pass.vertexSource = pass.vertexSource;
+    sampled.pass.triangles = pass.triangles;
+    sampled.degenerate = degenerate;
+    sampled.awayBits.swap(awayBits);
     for (int r = 0; r < regionCount; ++r) trial.facingAway[r] = area[r] > 0 ? away[r] / area[r] : 0;
 }
 
@@ -366,7 +342,7 @@ RegionTrial TrialMeshRegions(const IndexedMesh &in, TrialSetup<CoordType> &input
     for (int r : s.cellRegion) ++cells[r];
     for (int r = 0; r < regionCount; ++r)
         if (cells[r] > 1) flag(r, RegionFault::NotDisc);
-    MeasureFacingAway(s, pass, *input.grid, input.normal, input.facingAway, trial);
+    MeasureFacingAway(s, pass, defects.degenerate, *input.grid, input.normal, input.sampled, trial);
     for (int r = 0; r < regionCount; ++r)
         if (trial.facingAway[r] > kFacingAwayShare) flag(r, RegionFault::FacesAway);
     for (const PassDefects::Crossing &crossing : defects.crossings) flag(s.cellRegion[crossing.cell], RegionFault::Folds);
