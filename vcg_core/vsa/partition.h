@@ -99,15 +99,6 @@ public:
         ++count_;
     }
 
-    /// The faces the next two Pops return, the second -1 unless it is of the same rank (queue
-    /// not empty), for the flood to fetch their nodes before it needs them.
-    std::array<int, 2> NextFaces() const
-    {
-        const int word = LowestBit(summary_);
-        const Entry &e = entries_[head_[Rank(word << 6) + Rank(LowestBit(words_[word]))]];
-        return {e.candidate.face, e.next < 0 ? -1 : entries_[e.next].candidate.face};
-    }
-
     Candidate Pop()  // queue not empty
     {
         const int word = LowestBit(summary_);
@@ -213,26 +204,6 @@ void PrepareNodes(const Graph &mesh, const Metric &metric, PartitionWorkspace<Me
     });
 }
 
-/// Asks the cache for the nodes of the flood's next two pops and the next one's neighbours. The
-/// pops hop across the mesh, and a node fetched while the current one is worked on is not waited
-/// for.
-template <class Node>
-void FetchNextNodes(const std::vector<Node> &nodes, const FloodQueue &queue)
-{
-#if defined(__GNUC__) || defined(__clang__)
-    if (queue.Empty()) return;
-    const std::array<int, 2> next = queue.NextFaces();
-    const Node &node = nodes[next[0]];
-    __builtin_prefetch(&node);
-    for (int g : node.neighbors)
-        if (g >= 0) __builtin_prefetch(&nodes[g]);
-    if (next[1] >= 0) __builtin_prefetch(&nodes[next[1]]);
-#else
-    (void)nodes;
-    (void)queue;
-#endif
-}
-
 /// The flood proper, on nodes already marked: free ones with region -1 and no queued error.
 /// `seeds` lists (region, seed face) pairs by increasing region.
 template <class Metric, class Neighbors>
@@ -260,7 +231,6 @@ void Flood(const Metric &metric, const std::vector<Proxy> &proxies, const std::v
     while (!queue.Empty()) {
         const FloodQueue::Candidate c = queue.Pop();
         progress.Count();
-        FetchNextNodes(nodes, queue);
         Node &node = nodes[c.face];
         if (node.region >= 0) continue;
         node.region = c.region;
