@@ -12,27 +12,7 @@ only.
 import argparse
 import json
 
-
-def read_off(path):
-    """Vertices as (x, y, z) tuples and triangles as index triples (comments and colours ignored)."""
-    tokens = []
-    with open(path) as f:
-        for line in f:
-            tokens.extend(line.split("#", 1)[0].split())
-    if not tokens or tokens[0] != "OFF":
-        raise SystemExit("%s: not an OFF file" % path)
-    vertex_count, face_count = int(tokens[1]), int(tokens[2])
-    at = 4
-    vertices = [tuple(float(v) for v in tokens[at + 3 * i:at + 3 * i + 3]) for i in range(vertex_count)]
-    at += 3 * vertex_count
-    faces = []
-    for _ in range(face_count):
-        n = int(tokens[at])
-        if n != 3:
-            raise SystemExit("%s: a face with %d corners; triangles only" % (path, n))
-        faces.append(tuple(int(v) for v in tokens[at + 1:at + 4]))
-        at += 1 + n
-    return vertices, faces
+from off_mesh import read_off
 
 
 def subdivide(vertices, faces):
@@ -60,6 +40,8 @@ def main():
     parser.add_argument("steps", type=int)
     args = parser.parse_args()
     vertices, faces = read_off(args.off_in)
+    if any(len(face) != 3 for face in faces):
+        raise SystemExit("%s: triangles only" % args.off_in)
     for _ in range(args.steps):
         faces = subdivide(vertices, faces)
     with open(args.off_out, "w") as f:

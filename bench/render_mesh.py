@@ -19,6 +19,8 @@ import argparse
 import numpy as np
 from PIL import Image, ImageDraw, ImageFont
 
+import off_mesh
+
 FRONT = np.array([200, 205, 215], float)  # light grey-blue, like MeshLab's default
 BACK = np.array([230, 40, 40], float)     # faces seen from behind
 AMBIENT = 0.35                            # keeps faces turned from the light readable
@@ -29,22 +31,11 @@ LINE_HEIGHT = 12                          # Pillow's default bitmap font is 11 p
 
 
 def read_off(path):
-    """Vertices (n, 3) and triangles (m, 3) of an OFF file; extra values after a face's
-    vertex indices (vsa-bench's colours) are ignored, polygons are split into fans."""
-    with open(path) as f:
-        tokens = [line.split("#")[0].split() for line in f]
-    tokens = [t for t in tokens if t]
-    header = tokens[0]
-    counts = header[1:] if len(header) > 1 else tokens[1]
-    start = 1 if len(header) > 1 else 2
-    nv, nf = int(counts[0]), int(counts[1])
-    vertices = np.array([[float(x) for x in t[:3]] for t in tokens[start:start + nv]], float).reshape(-1, 3)
-    triangles = []
-    for t in tokens[start + nv:start + nv + nf]:
-        n = int(t[0])
-        corners = [int(x) for x in t[1:1 + n]]
-        triangles += [[corners[0], corners[i], corners[i + 1]] for i in range(1, n - 1)]
-    return vertices, np.array(triangles, int).reshape(-1, 3)
+    """Vertices (n, 3) and triangles (m, 3) of an OFF file (off_mesh.read_off); polygons are
+    split into fans."""
+    vertices, faces = off_mesh.read_off(path)
+    triangles = [[corners[0], corners[i], corners[i + 1]] for corners in faces for i in range(1, len(corners) - 1)]
+    return np.array(vertices, float).reshape(-1, 3), np.array(triangles, int).reshape(-1, 3)
 
 
 def read_labels(path):

@@ -99,7 +99,7 @@ struct RegionTrial
 /// the next, and their facing-away samples need no grid queries again.
 struct SampledTriangles
 {
-    MeshingPass pass;  ///< positions, vertexSource and triangles only
+    MeshingPass pass;  ///< only what RepeatedFaces reads: positions, vertexSource and triangles
     std::vector<char> degenerate;  ///< per triangle, DegenerateFaceMask
     std::vector<uint8_t> awayBits;  ///< per triangle, which of its four samples face away
 };
@@ -165,9 +165,12 @@ inline void MeasureFacingAway(const MeshingSurface &s, const MeshingPass &pass, 
         const Point3d &a = pass.positions[pass.triangles[t][0]], &b = pass.positions[pass.triangles[t][1]],
                       &c = pass.positions[pass.triangles[t][2]];
         const Point3d n = (b - a) ^ (c - a);
-        area[r] += n.Norm();
-        int bits = repeats[t] >= 0 ? sampled.awayBits[repeats[t]] : 0;
-        if (repeats[t] < 0) {
+        const double doubleArea = n.Norm();
+        area[r] += doubleArea;
+        int bits = 0;
+        if (repeats[t] >= 0) {
+            bits = sampled.awayBits[repeats[t]];
+        } else {
             progress.Count(4 * kNearestFaceItems);
             int k = 0;
             for (const Point3d &p :
@@ -178,7 +181,7 @@ inline void MeasureFacingAway(const MeshingSurface &s, const MeshingPass &pass, 
             }
         }
         for (int k = 0; k < 4; ++k)  // one sample at a time, so the sums round as they always did
-            if (bits >> k & 1) away[r] += n.Norm() / 4;
+            if (bits >> k & 1) away[r] += doubleArea / 4;
         awayBits[t] = uint8_t(bits);
     }
     sampled.pass = MeshingPass();
