@@ -123,6 +123,23 @@ TEST(PartitionFlood, QueuePopsByRankFirstInFirstOut)
     EXPECT_GT(pops, 5000);
 }
 
+TEST(PartitionFlood, ResetEmptiesAQueueLeftWithCandidates)
+{
+    // A flood that stopped early leaves candidates behind; the next flood must not see them.
+    FloodQueue queue;
+    queue.Reset(1.0);
+    for (int i = 0; i < 100; ++i) queue.Push(queue.RankOf(0.01 * i), {i, 0});
+    for (int i = 0; i < 10; ++i) queue.Pop();
+    queue.Reset(1.0);
+    EXPECT_TRUE(queue.Empty());
+    queue.Push(queue.RankOf(0.5), {7, 1});
+    queue.Push(queue.RankOf(0.5), {8, 2});
+    const FloodQueue::Candidate first = queue.Pop(), second = queue.Pop();
+    EXPECT_EQ(std::make_pair(first.face, first.region), std::make_pair(7, 1));
+    EXPECT_EQ(std::make_pair(second.face, second.region), std::make_pair(8, 2));
+    EXPECT_TRUE(queue.Empty());
+}
+
 TEST(PartitionFlood, LabelsAreTheTextbookFloodsOnARealMesh)
 {
     const IndexedMesh im = vsa_test::LoadCgalMesh("fandisk.off");

@@ -45,7 +45,8 @@ struct RegionState
 /// candidates pop first in, first out, so a region grows breadth-first through faces that fit
 /// it about equally well (whole planar sides tie at error 0). Errors 2^63 times below the
 /// metric's ErrorScale() rank 0. Ranks are few, so this is a bucket queue, O(1) per push and pop: exact
-/// error order cost more time for no better partitions (docs/tuning.md).
+/// error order cost more time for no better partitions (docs/tuning.md). Each rank keeps its
+/// candidates in an array of its own, so that pops read memory in order.
 class FloodQueue
 {
 public:
@@ -64,11 +65,11 @@ public:
     void Reset(double errorScale)
     {
         if (!(errorScale > 0 && errorScale < std::numeric_limits<double>::infinity())) errorScale = 1;
-        head_.assign(kRanks, -1);  // cheap: the queue is empty after a flood, this only sizes it
-        tail_.resize(kRanks);
+        buckets_.resize(kRanks);
+        if (count_)  // a flood interrupted; after a whole one every bucket is empty already
+            for (Bucket &b : buckets_) b = Bucket();
         std::fill(std::begin(words_), std::end(words_), 0);
         summary_ = 0;
-        entries_.clear();
         count_ = 0;
         // Ranks span the kBinades binades below twice the scale: errors above that share the
         // last rank, errors below it rank 0.
@@ -86,16 +87,12 @@ public:
 
     void Push(Rank rank, const Candidate &c)
     {
-        const int entry = int(entries_.size());
-        entries_.push_back({c, -1});
-        if (head_[rank] < 0) {
-            head_[rank] = entry;
+        Bucket &b = buckets_[rank];
+        if (b.items.empty()) {
             words_[rank >> 6] |= uint64_t(1) << (rank & 63);
             summary_ |= uint64_t(1) << (rank >> 6);
-        } else {
-            entries_[tail_[rank]].next = entry;
         }
-        tail_[rank] = entry;
+        b.items.push_back(c);
         ++count_;
     }
 
@@ -103,24 +100,27 @@ public:
     {
         const int word = LowestBit(summary_);
         const Rank rank = Rank(word << 6) + Rank(LowestBit(words_[word]));
-        const Entry &e = entries_[head_[rank]];
-        head_[rank] = e.next;
-        if (e.next < 0) {
+        Bucket &b = buckets_[rank];
+        const Candidate c = b.items[b.head++];
+        if (b.head == b.items.size()) {
+            b.items.clear();
+            b.head = 0;
             words_[word] &= ~(uint64_t(1) << (rank & 63));
             if (!words_[word]) summary_ &= ~(uint64_t(1) << word);
         }
         --count_;
-        return e.candidate;
+        return c;
     }
 
 private:
     static_assert(kRanks / 64 <= 64, "one summary word must cover every word of ranks");
     static constexpr int kMantissaShift = 52 - kSignificantBits;
 
-    struct Entry
+    /// One rank's candidates in push order; those before `head` have popped.
+    struct Bucket
     {
-        Candidate candidate;
-        int next;  ///< the next entry of the same rank, -1 for the last
+        std::vector<Candidate> items;
+        size_t head = 0;
     };
 
     static uint64_t Bits(double x)  // for x >= 0 their integer order is the numeric order
@@ -144,10 +144,9 @@ private:
 #endif
     }
 
-    std::vector<int> head_, tail_;  ///< per rank: first and last entry, head -1 when none
+    std::vector<Bucket> buckets_;  ///< per rank
     uint64_t words_[kRanks / 64] = {};  ///< bit r: rank r holds entries
     uint64_t summary_ = 0;              ///< bit w: words_[w] != 0
-    std::vector<Entry> entries_;        ///< every push of this flood, linked per rank
     int64_t lowestRankedBits_ = 0;      ///< the shifted error bits that rank 0
     size_t count_ = 0;
 };
