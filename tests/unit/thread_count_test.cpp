@@ -105,6 +105,21 @@ TEST(ThreadCount, ParallelPassesSplitIntoSeveralChunks)
     EXPECT_GE(ChunkCount(Indexed("fandisk.off").FaceCount()), 3);
 }
 
+TEST(ThreadCount, EveryGroupOnceOnAnyNumberOfThreads)
+{
+    // Groups of very different sizes, as cells are: each is visited once, whatever the threads.
+    const int groups = 97;
+    for (int threads : kThreadCounts) {
+        const std::vector<int> visits = WithThreads(threads, [&] {
+            std::vector<int> v(groups, 0);
+            ForEachGroup(
+                groups, size_t(groups) * 50, [](int g) { return g * g % 100; }, [&](int g) { v[g] += 1 + g; });
+            return v;
+        });
+        for (int g = 0; g < groups; ++g) EXPECT_EQ(visits[g], 1 + g) << "group " << g << ", " << threads << " threads";
+    }
+}
+
 TEST(ThreadCount, SumsOfListedItemsAreTheSameBitsAsSumsOverAll)
 {
     // Values of very different sizes, so that another order of the additions would round

@@ -17,6 +17,7 @@
 #include <memory>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace vcg {
@@ -287,22 +288,30 @@ inline void ChooseSplitFaces(const MeshingSurface &s, const MeshingPass &pass, c
     std::vector<int> seedCell(regionCount, -1);
     for (int f = 0; f < s.FaceCount(); ++f)
         if (seeds[s.faceRegion[f]] == s.sourceFace[f]) seedCell[s.faceRegion[f]] = s.faceCell[f];
-    std::vector<double> farthest(regionCount, -1);
-    ProgressCounter progress;
-    for (int f = 0; f < s.FaceCount(); ++f) {
-        progress.Count();
+    // Per region: (distance, face) of its farthest face so far. Chunks keep their first farthest
+    // face and merge in face order, so the first farthest face wins on any number of threads.
+    using Farthest = std::pair<double, int>;
+    std::vector<Farthest> farthest(regionCount, Farthest(-1, -1));
+    const auto distance = [&](int f) {
         const int r = s.faceRegion[f];
-        if (trial.fault[r] == RegionFault::None) continue;
         const Point3d c = centroid(s.positions, s.faces[f]);
-        double d;
-        if (trial.fault[r] != RegionFault::NotDisc)
-            d = DistanceToTriangles(pass, order, offset[r], offset[r + 1], c);
-        else if (s.faceCell[f] != seedCell[r])
-            d = (c - centroid(in.positions, in.faces[seeds[r]])).Norm();
-        else
-            continue;
-        if (d > farthest[r]) farthest[r] = d, trial.splitFace[r] = s.sourceFace[f];
-    }
+        if (trial.fault[r] != RegionFault::NotDisc) return DistanceToTriangles(pass, order, offset[r], offset[r + 1], c);
+        return (c - centroid(in.positions, in.faces[seeds[r]])).Norm();
+    };
+    const auto keep = [](Farthest &best, const Farthest &candidate) {
+        if (candidate.first > best.first) best = candidate;
+    };
+    SumByKey(
+        size_t(s.FaceCount()), farthest,
+        [&](size_t f) {
+            const int r = s.faceRegion[f];
+            const bool measured = trial.fault[r] != RegionFault::None &&
+                                  (trial.fault[r] != RegionFault::NotDisc || s.faceCell[f] != seedCell[r]);
+            return measured ? r : -1;
+        },
+        [&](Farthest &best, size_t f) { keep(best, Farthest(distance(int(f)), int(f))); }, keep);
+    for (int r = 0; r < regionCount; ++r)
+        if (farthest[r].second >= 0) trial.splitFace[r] = s.sourceFace[farthest[r].second];
 }
 
 /// Meshes `partition` once, each region as its polygon on its anchors (no repair, no halving),

@@ -7,6 +7,7 @@
 #define VSA_MESHING_SURFACE_H
 
 #include <vsa/indexed_mesh.h>
+#include <vsa/parallel.h>
 
 #include <algorithm>
 #include <array>
@@ -330,15 +331,15 @@ inline void BuildCells(MeshingSurface &s)
     BuildOffsets(s.faceCell, s.CellCount(), s.cellFaceOffset, s.cellFaces);
 }
 
-/// Fills the cells' area vectors, areas and centroids (see MeshingSurface).
+/// Fills the cells' area vectors, areas and centroids (see MeshingSurface), cell by cell on
+/// every core: each cell sums its own faces in order, so the bits do not depend on the threads.
 inline void MeasureCells(MeshingSurface &s)
 {
     s.cellAreaVector.assign(s.CellCount(), Point3d(0, 0, 0));
     s.cellDoubleArea.assign(s.CellCount(), 0);
     s.cellCentroid.assign(s.CellCount(), Point3d(0, 0, 0));
-    ProgressCounter progress;
-    for (int c = 0; c < s.CellCount(); ++c) {
-        progress.Count(s.cellFaceOffset[c + 1] - s.cellFaceOffset[c]);
+    const auto facesOf = [&s](int c) { return s.cellFaceOffset[c + 1] - s.cellFaceOffset[c]; };
+    ForEachGroup(s.CellCount(), size_t(s.FaceCount()), facesOf, [&s](int c) {
         Point3d centroid(0, 0, 0);
         for (int k = s.cellFaceOffset[c]; k < s.cellFaceOffset[c + 1]; ++k) {
             const auto &t = s.faces[s.cellFaces[k]];
@@ -348,7 +349,7 @@ inline void MeasureCells(MeshingSurface &s)
             centroid += (s.positions[t[0]] + s.positions[t[1]] + s.positions[t[2]]) * (n.Norm() / 3);
         }
         s.cellCentroid[c] = centroid / (s.cellDoubleArea[c] > 0 ? s.cellDoubleArea[c] : 1.0);
-    }
+    });
 }
 
 /// Fills onBorder and junction (see MeshingSurface).
@@ -376,61 +377,64 @@ inline bool IsCellBoundary(const MeshingSurface &s, int f, int i)
     return g < 0 || s.faceCell[g] != s.faceCell[f];
 }
 
-/// Follows the boundary of every cell. A cell is a disc, so its boundary is one simple loop;
-/// anything else means a bug upstream and is reported, not papered over.
+/// Follows the boundary of cell `c` into s.cellLoop[c] and s.cellLoopOther[c]. A cell is a disc,
+/// so its boundary is one simple loop; anything else means a bug upstream and is returned as
+/// the reason, not papered over.
+inline std::string TraceCellLoop(MeshingSurface &s, int c)
+{
+    const auto notSimple = [c] { return "internal error: the boundary of cell " + std::to_string(c) + " is not a simple loop"; };
+    int startFace = -1, startEdge = -1, boundaryEdges = 0;
+    for (int k = s.cellFaceOffset[c]; k < s.cellFaceOffset[c + 1]; ++k) {
+        const int f = s.cellFaces[k];
+        for (int i = 0; i < 3; ++i)
+            if (IsCellBoundary(s, f, i)) {
+                ++boundaryEdges;
+                if (startFace < 0) startFace = f, startEdge = i;
+            }
+    }
+    if (startFace < 0) return "internal error: a cell without boundary (cell " + std::to_string(c) + ")";
+    std::vector<int> &loop = s.cellLoop[c];
+    int f = startFace, i = startEdge;
+    do {
+        if (int(loop.size()) >= boundaryEdges) return notSimple();
+        loop.push_back(s.faces[f][i]);
+        const int g = s.neighbors[f][i];
+        s.cellLoopOther[c].push_back(g < 0 ? -1 : s.faceCell[g]);
+        // Turn around the head vertex inside the cell to the next boundary edge.
+        int cf = f, ci = (i + 1) % 3;
+        for (int turns = 0; !IsCellBoundary(s, cf, ci); ++turns) {
+            if (turns > s.FaceCount()) return "internal error: lost walking around a vertex of cell " + std::to_string(c);
+            const int g2 = s.neighbors[cf][ci];
+            const int j = TwinEdge(s, cf, ci);
+            cf = g2;
+            ci = (j + 1) % 3;
+        }
+        f = cf;
+        i = ci;
+    } while (f != startFace || i != startEdge);
+    std::vector<int> sorted = loop;  // a vertex twice: the cell pinches there
+    std::sort(sorted.begin(), sorted.end());
+    if (std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end()) return notSimple();
+    if (int(loop.size()) != boundaryEdges)
+        return "internal error: cell " + std::to_string(c) + " has more than one boundary loop";
+    return {};
+}
+
+/// Traces every cell's boundary loop (TraceCellLoop), cell by cell on every core; false with
+/// the first cell's reason in `error` if one is not a simple loop.
 inline bool TraceCellLoops(MeshingSurface &s, std::string &error)
 {
     const int cellCount = s.CellCount();
     s.cellLoop.assign(cellCount, {});
     s.cellLoopOther.assign(cellCount, {});
-    std::vector<int> lastSeenInCell(s.positions.size(), -1);
-    ProgressCounter progress;
-    for (int c = 0; c < cellCount; ++c) {
-        progress.Count(s.cellFaceOffset[c + 1] - s.cellFaceOffset[c]);
-        int startFace = -1, startEdge = -1, boundaryEdges = 0;
-        for (int k = s.cellFaceOffset[c]; k < s.cellFaceOffset[c + 1]; ++k) {
-            const int f = s.cellFaces[k];
-            for (int i = 0; i < 3; ++i)
-                if (IsCellBoundary(s, f, i)) {
-                    ++boundaryEdges;
-                    if (startFace < 0) startFace = f, startEdge = i;
-                }
-        }
-        if (startFace < 0) {
-            error = "internal error: a cell without boundary (cell " + std::to_string(c) + ")";
+    std::vector<std::string> errors(cellCount);
+    const auto facesOf = [&s](int c) { return s.cellFaceOffset[c + 1] - s.cellFaceOffset[c]; };
+    ForEachGroup(cellCount, size_t(s.FaceCount()), facesOf, [&](int c) { errors[c] = TraceCellLoop(s, c); });
+    for (const std::string &e : errors)
+        if (!e.empty()) {
+            error = e;
             return false;
         }
-        int f = startFace, i = startEdge;
-        do {
-            const int v = s.faces[f][i];
-            if (lastSeenInCell[v] == c || int(s.cellLoop[c].size()) >= boundaryEdges) {
-                error = "internal error: the boundary of cell " + std::to_string(c) + " is not a simple loop";
-                return false;
-            }
-            lastSeenInCell[v] = c;
-            s.cellLoop[c].push_back(v);
-            const int g = s.neighbors[f][i];
-            s.cellLoopOther[c].push_back(g < 0 ? -1 : s.faceCell[g]);
-            // Turn around the head vertex inside the cell to the next boundary edge.
-            int cf = f, ci = (i + 1) % 3;
-            for (int turns = 0; !IsCellBoundary(s, cf, ci); ++turns) {
-                if (turns > s.FaceCount()) {
-                    error = "internal error: lost walking around a vertex of cell " + std::to_string(c);
-                    return false;
-                }
-                const int g2 = s.neighbors[cf][ci];
-                const int j = TwinEdge(s, cf, ci);
-                cf = g2;
-                ci = (j + 1) % 3;
-            }
-            f = cf;
-            i = ci;
-        } while (f != startFace || i != startEdge);
-        if (int(s.cellLoop[c].size()) != boundaryEdges) {
-            error = "internal error: cell " + std::to_string(c) + " has more than one boundary loop";
-            return false;
-        }
-    }
     return true;
 }
 

@@ -90,6 +90,23 @@ void ForEachChunk(size_t itemCount, Body &&body)
     }
 }
 
+/// Calls body(group) for every group of [0, groupCount) (cells, regions: groups of items that
+/// differ in size), spread over the threads one group at a time when the groups hold
+/// detail::ParallelMinItems() items or more in all (`itemCount`). A group's work must not depend
+/// on another's, and the body must not throw. Only the calling thread ticks the progress,
+/// counting itemsOf(group) of each of its groups once per thread.
+template <class ItemsOf, class Body>
+void ForEachGroup(int groupCount, size_t itemCount, ItemsOf &&itemsOf, Body &&body)
+{
+#ifdef _OPENMP
+#pragma omp parallel for schedule(dynamic, 1) if (groupCount > 1 && itemCount >= detail::ParallelMinItems())
+#endif
+    for (int group = 0; group < groupCount; ++group) {
+        body(group);
+        if (ThreadIndex() == 0) ProgressTick(double(itemsOf(group)) * TeamSize());
+    }
+}
+
 /// Per-key sums over items, to the same bits on any number of threads: each chunk sums its own
 /// items by key in item order, then the chunks' partial sums are added to `sums` in chunk
 /// order. `sums[k]` comes in as the empty sum of key k, the start of every partial sum too.
