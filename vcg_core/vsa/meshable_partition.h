@@ -295,7 +295,8 @@ inline void ChooseSplitFaces(const MeshingSurface &s, const MeshingPass &pass, c
     const auto distance = [&](int f) {
         const int r = s.faceRegion[f];
         const Point3d c = centroid(s.positions, s.faces[f]);
-        if (trial.fault[r] != RegionFault::NotDisc) return DistanceToTriangles(pass, order, offset[r], offset[r + 1], c);
+        if (trial.fault[r] != RegionFault::NotDisc)
+            return DistanceToTriangles(pass, order, offset[r], offset[r + 1], c);
         return (c - centroid(in.positions, in.faces[seeds[r]])).Norm();
     };
     const auto keep = [](Farthest &best, const Farthest &candidate) {

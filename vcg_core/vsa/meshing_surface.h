@@ -382,7 +382,9 @@ inline bool IsCellBoundary(const MeshingSurface &s, int f, int i)
 /// the reason, not papered over.
 inline std::string TraceCellLoop(MeshingSurface &s, int c)
 {
-    const auto notSimple = [c] { return "internal error: the boundary of cell " + std::to_string(c) + " is not a simple loop"; };
+    const auto notSimple = [c] {
+        return "internal error: the boundary of cell " + std::to_string(c) + " is not a simple loop";
+    };
     int startFace = -1, startEdge = -1, boundaryEdges = 0;
     for (int k = s.cellFaceOffset[c]; k < s.cellFaceOffset[c + 1]; ++k) {
         const int f = s.cellFaces[k];
@@ -403,7 +405,8 @@ inline std::string TraceCellLoop(MeshingSurface &s, int c)
         // Turn around the head vertex inside the cell to the next boundary edge.
         int cf = f, ci = (i + 1) % 3;
         for (int turns = 0; !IsCellBoundary(s, cf, ci); ++turns) {
-            if (turns > s.FaceCount()) return "internal error: lost walking around a vertex of cell " + std::to_string(c);
+            if (turns > s.FaceCount())
+                return "internal error: lost walking around a vertex of cell " + std::to_string(c);
             const int g2 = s.neighbors[cf][ci];
             const int j = TwinEdge(s, cf, ci);
             cf = g2;
