@@ -339,16 +339,20 @@ inline void MeasureCells(MeshingSurface &s)
     s.cellDoubleArea.assign(s.CellCount(), 0);
     s.cellCentroid.assign(s.CellCount(), Point3d(0, 0, 0));
     const auto facesOf = [&s](int c) { return s.cellFaceOffset[c + 1] - s.cellFaceOffset[c]; };
+    // Sums in locals, stored once: neighbouring cells' entries share cache lines across threads.
     ForEachGroup(s.CellCount(), size_t(s.FaceCount()), facesOf, [&s](int c) {
-        Point3d centroid(0, 0, 0);
+        Point3d areaVector(0, 0, 0), centroid(0, 0, 0);
+        double doubleArea = 0;
         for (int k = s.cellFaceOffset[c]; k < s.cellFaceOffset[c + 1]; ++k) {
             const auto &t = s.faces[s.cellFaces[k]];
             const Point3d n = (s.positions[t[1]] - s.positions[t[0]]) ^ (s.positions[t[2]] - s.positions[t[0]]);
-            s.cellAreaVector[c] += n;
-            s.cellDoubleArea[c] += n.Norm();
+            areaVector += n;
+            doubleArea += n.Norm();
             centroid += (s.positions[t[0]] + s.positions[t[1]] + s.positions[t[2]]) * (n.Norm() / 3);
         }
-        s.cellCentroid[c] = centroid / (s.cellDoubleArea[c] > 0 ? s.cellDoubleArea[c] : 1.0);
+        s.cellAreaVector[c] = areaVector;
+        s.cellDoubleArea[c] = doubleArea;
+        s.cellCentroid[c] = centroid / (doubleArea > 0 ? doubleArea : 1.0);
     });
 }
 
@@ -395,13 +399,14 @@ inline std::string TraceCellLoop(MeshingSurface &s, int c)
             }
     }
     if (startFace < 0) return "internal error: a cell without boundary (cell " + std::to_string(c) + ")";
-    std::vector<int> &loop = s.cellLoop[c];
+    // Built here and moved in once: neighbouring cells' vectors share cache lines across threads.
+    std::vector<int> loop, other;
     int f = startFace, i = startEdge;
     do {
         if (int(loop.size()) >= boundaryEdges) return notSimple();
         loop.push_back(s.faces[f][i]);
         const int g = s.neighbors[f][i];
-        s.cellLoopOther[c].push_back(g < 0 ? -1 : s.faceCell[g]);
+        other.push_back(g < 0 ? -1 : s.faceCell[g]);
         // Turn around the head vertex inside the cell to the next boundary edge.
         int cf = f, ci = (i + 1) % 3;
         for (int turns = 0; !IsCellBoundary(s, cf, ci); ++turns) {
@@ -420,6 +425,8 @@ inline std::string TraceCellLoop(MeshingSurface &s, int c)
     if (std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end()) return notSimple();
     if (int(loop.size()) != boundaryEdges)
         return "internal error: cell " + std::to_string(c) + " has more than one boundary loop";
+    s.cellLoop[c] = std::move(loop);
+    s.cellLoopOther[c] = std::move(other);
     return {};
 }
 
