@@ -56,7 +56,7 @@ inline int HalveCells(MeshingSurface &s, const std::vector<char> &flagged)
         return detail::SpreadInPiece(s, c, seeds, s.cellFaces.size(), reached, nearest);
     };
     for (int c = 0; c < s.CellCount(); ++c) {
-        if (!flagged[c] || s.cellFaceOffset[c + 1] - s.cellFaceOffset[c] < 2) continue;
+        if (!flagged[c] || s.CellFaceCount(c) < 2) continue;
         const int first = spread(c, {s.cellFaces[s.cellFaceOffset[c]]}).back();
         const int second = spread(c, {first}).back();
         for (int f : spread(c, {first, second}))
@@ -80,7 +80,7 @@ inline int CarveCells(MeshingSurface &s, const std::vector<int> &seeds)
     std::vector<char> reached(s.FaceCount(), 0);
     std::vector<int> nearest(s.FaceCount(), -1);
     for (int seed : seeds) {
-        const int c = s.faceCell[seed], cellFaces = s.cellFaceOffset[c + 1] - s.cellFaceOffset[c];
+        const int c = s.faceCell[seed], cellFaces = s.CellFaceCount(c);
         if (s.facePiece[seed] != c || cellFaces < 2) continue;
         const size_t share = std::max(1, cellFaces / detail::kCarvedShare);
         for (int f : detail::SpreadInPiece(s, c, {seed}, share, reached, nearest)) s.facePiece[f] = nextPiece;

@@ -196,7 +196,7 @@ MeshingPass RunMeshingPass(const MeshingSurface &s, const std::vector<Proxy> &pr
         if (inputCells[c]) KeepInputFaces<CoordType>(s, c, registry, pass);
     ProgressCounter progress;
     for (int c = 0; c < s.CellCount(); ++c) {
-        progress.Count(s.cellFaceOffset[c + 1] - s.cellFaceOffset[c]);
+        progress.Count(s.CellFaceCount(c));
         if (inputCells[c]) continue;
         std::vector<std::array<int, 3>> triangles = ReusableTriangles(previous, pass, c, registry);
         if (!triangles.empty()) {

@@ -166,7 +166,7 @@ inline double FacesKeepingInput(const MeshingSurface &s, const MeshingPass &pass
     double faces = 0;
     for (int c : pass.triangleCell) faces += !keep[c];
     for (int c = 0; c < s.CellCount(); ++c)
-        if (keep[c]) faces += s.cellFaceOffset[c + 1] - s.cellFaceOffset[c];
+        if (keep[c]) faces += s.CellFaceCount(c);
     return faces;
 }
 

@@ -65,6 +65,7 @@ struct MeshingSurface
     int VertexCount() const { return int(positions.size()); }
     int FaceCount() const { return int(faces.size()); }
     int CellCount() const { return int(cellRegion.size()); }
+    int CellFaceCount(int c) const { return cellFaceOffset[c + 1] - cellFaceOffset[c]; }
 };
 
 namespace detail {
@@ -338,7 +339,7 @@ inline void MeasureCells(MeshingSurface &s)
     s.cellAreaVector.assign(s.CellCount(), Point3d(0, 0, 0));
     s.cellDoubleArea.assign(s.CellCount(), 0);
     s.cellCentroid.assign(s.CellCount(), Point3d(0, 0, 0));
-    const auto facesOf = [&s](int c) { return s.cellFaceOffset[c + 1] - s.cellFaceOffset[c]; };
+    const auto facesOf = [&s](int c) { return s.CellFaceCount(c); };
     // Sums in locals, stored once: neighbouring cells' entries share cache lines across threads.
     ForEachGroup(s.CellCount(), size_t(s.FaceCount()), facesOf, [&s](int c) {
         Point3d areaVector(0, 0, 0), centroid(0, 0, 0);
@@ -346,9 +347,10 @@ inline void MeasureCells(MeshingSurface &s)
         for (int k = s.cellFaceOffset[c]; k < s.cellFaceOffset[c + 1]; ++k) {
             const auto &t = s.faces[s.cellFaces[k]];
             const Point3d n = (s.positions[t[1]] - s.positions[t[0]]) ^ (s.positions[t[2]] - s.positions[t[0]]);
+            const double norm = n.Norm();
             areaVector += n;
-            doubleArea += n.Norm();
-            centroid += (s.positions[t[0]] + s.positions[t[1]] + s.positions[t[2]]) * (n.Norm() / 3);
+            doubleArea += norm;
+            centroid += (s.positions[t[0]] + s.positions[t[1]] + s.positions[t[2]]) * (norm / 3);
         }
         s.cellAreaVector[c] = areaVector;
         s.cellDoubleArea[c] = doubleArea;
@@ -438,7 +440,7 @@ inline bool TraceCellLoops(MeshingSurface &s, std::string &error)
     s.cellLoop.assign(cellCount, {});
     s.cellLoopOther.assign(cellCount, {});
     std::vector<std::string> errors(cellCount);
-    const auto facesOf = [&s](int c) { return s.cellFaceOffset[c + 1] - s.cellFaceOffset[c]; };
+    const auto facesOf = [&s](int c) { return s.CellFaceCount(c); };
     ForEachGroup(cellCount, size_t(s.FaceCount()), facesOf, [&](int c) { errors[c] = TraceCellLoop(s, c); });
     for (const std::string &e : errors)
         if (!e.empty()) {
