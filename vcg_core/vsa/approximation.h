@@ -318,12 +318,13 @@ public:
             if (regionFaces[i].size() < 2)
                 throw std::invalid_argument("Region " + std::to_string(regions[i]) +
                                             " has a single face: cannot split it.");
-        WithMetric([&](const auto &metric, auto &ws) {
+        WithMetric([&](const auto &metric, auto &) {
+            PartitionWorkspace<std::decay_t<decltype(metric)>> regionNodes;  // see FloodWithinAlone
             for (size_t i = 0; i < regions.size(); ++i) {
                 int face = faces[i];
                 if (face < 0 || face >= mesh_.FaceCount() || faceRegion[face] != regions[i] || state_.IsSeed(face))
                     face = WorstFace(regionFaces[i]);
-                SplitRegion(metric, ws, regions[i], face, regionFaces[i]);
+                SplitRegion(metric, regionNodes, regions[i], face, regionFaces[i]);
             }
         });
         StartTracking(false);
@@ -551,7 +552,7 @@ private:
         only[region] = only[added] = 1;
         for (int i = 0; i < std::max(1, param_.relaxations); ++i) {
             const std::vector<std::pair<int, int>> seeds{{region, state_.seeds[region]}, {added, state_.seeds[added]}};
-            FloodWithin(mesh_, metric, state_.partition.proxies, seeds, faces, faceRegion, ws);
+            FloodWithinAlone(mesh_, metric, state_.partition.proxies, seeds, faces, faceRegion, ws);
             for (int f : faces)  // faces neither seed reached (the region was in pieces): back to it
                 if (faceRegion[f] < 0) faceRegion[f] = region;
             FitRegions(metric, state_, only, &faces);

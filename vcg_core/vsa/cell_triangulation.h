@@ -157,6 +157,7 @@ private:
         {
             // Each edge once: from the higher of its two faces, or from its only one.
             std::vector<std::array<int, 2>> edges;
+            edges.reserve(size_t(s.FaceCount()) * 3 / 2);  // a closed surface's: one realloc at most on an open one
             ProgressCounter progress;
             for (int f = 0; f < s.FaceCount(); ++f, progress.Count())
                 for (int i = 0; i < 3; ++i)
@@ -165,8 +166,8 @@ private:
             for (const auto &[u, w] : edges) ++offset[u + 1], ++offset[w + 1], progress.Count();
             std::partial_sum(offset.begin(), offset.end(), offset.begin());
             std::vector<int> fill(offset.begin(), offset.end() - 1);
-            to.resize(2 * edges.size());
-            length.resize(2 * edges.size());
+            ResizeReporting(to, 2 * edges.size());
+            ResizeReporting(length, 2 * edges.size());
             for (const auto &[u, w] : edges) {
                 progress.Count();
                 const double edgeLength = (s.positions[w] - s.positions[u]).Norm();

@@ -438,7 +438,8 @@ inline double PairGridMargin(const IndexedMesh &im, double clearance)
 /// ShapeOfFace of every face of `im` not flagged in `degenerate`.
 inline std::vector<FaceShape> ShapesOfFaces(const IndexedMesh &im, const std::vector<char> &degenerate)
 {
-    std::vector<FaceShape> shape(im.faces.size());
+    std::vector<FaceShape> shape;
+    ResizeReporting(shape, im.faces.size());
     ProgressCounter progress;
     for (int f = 0; f < im.FaceCount(); ++f, progress.Count())
         if (!degenerate[f]) shape[f] = ShapeOfFace(im, f);

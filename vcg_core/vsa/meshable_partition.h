@@ -106,8 +106,8 @@ struct SampledTriangles
 };
 
 /// What every round's trial meshing shares, set up once: the meshing surface, whose regions and
-/// cells alone change from round to round (see AssignRegions), its faces in a grid with their
-/// normals (for the facing-away and the gap tests), and the input's own intersections. The
+/// cells alone change from round to round (see AssignRegions), its faces in a grid (for the
+/// facing-away and the gap tests), and the input's own intersections. The
 /// latest trial's mesher is kept to lend its flooding to the next: a cell that the splits did
 /// not change keeps its colours (see CellFlooding). It refers to its own surface, so there are
 /// two, relabelled in turn.
@@ -124,12 +124,6 @@ struct TrialSetup
         const MeshingSurface &s = surfaces[0];
         grid = std::make_unique<SurfaceGrid>(s.positions, s.faces);
         gapTest = std::make_unique<ChordGapTest>(s.positions, s.faces, once.chordGapThreshold, grid.get());
-        normal.resize(s.FaceCount());
-        ProgressCounter progress;
-        for (int f = 0; f < s.FaceCount(); ++f, progress.Count()) {
-            const auto &t = s.faces[f];
-            normal[f] = (s.positions[t[1]] - s.positions[t[0]]) ^ (s.positions[t[2]] - s.positions[t[0]]);
-        }
     }
     TrialSetup(const TrialSetup &) = delete;  // grid, gapTest and latest refer to the surfaces
 
@@ -139,7 +133,6 @@ struct TrialSetup
     bool meshable = false;  ///< false: the meshing refuses the input, and says why
     std::unique_ptr<SurfaceGrid> grid;     ///< of the surfaces' faces (the same in both)
     std::unique_ptr<ChordGapTest> gapTest;
-    std::vector<Point3d> normal;  ///< per surface face, not normalized
     std::array<std::vector<Proxy>, 2> proxies;  ///< UsableProxies of each surface's regions
     std::unique_ptr<CellMesher<CoordType>> latest;
     int latestSurface = 1;  ///< the surface `latest` meshed, which the next trial leaves alone
@@ -147,13 +140,12 @@ struct TrialSetup
     int passes = 0;
 };
 
-/// Per region, the share of its triangles' area whose nearest input face (in `grid`, with its
-/// `normal`) points the other way (what shades dark where the input does not), from four
+/// Per region, the share of its triangles' area whose nearest input face (in `grid`, a face of
+/// `s`) points the other way (what shades dark where the input does not), from four
 /// samples per triangle. Triangles of `sampled` (the previous trial's) are not sampled again;
 /// `sampled` is left with this pass's triangles (`degenerate` their mask).
 inline void MeasureFacingAway(const MeshingSurface &s, const MeshingPass &pass, const std::vector<char> &degenerate,
-                              const SurfaceGrid &grid, const std::vector<Point3d> &normal, SampledTriangles &sampled,
-                              RegionTrial &trial)
+                              const SurfaceGrid &grid, SampledTriangles &sampled, RegionTrial &trial)
 {
     const int regionCount = int(trial.fault.size());
     std::vector<double> area(regionCount, 0), away(regionCount, 0);
@@ -177,7 +169,7 @@ inline void MeasureFacingAway(const MeshingSurface &s, const MeshingPass &pass, 
             for (const Point3d &p :
                  {(a + b + c) / 3.0, (a * 4 + b + c) / 6.0, (a + b * 4 + c) / 6.0, (a + b + c * 4) / 6.0}) {
                 nearest = grid.NearestFace(p, nearest);
-                if (nearest >= 0 && normal[nearest] * n < 0) bits |= 1 << k;
+                if (nearest >= 0 && s.DoubleAreaVector(nearest) * n < 0) bits |= 1 << k;
                 ++k;
             }
         }
@@ -355,7 +347,7 @@ RegionTrial TrialMeshRegions(const IndexedMesh &in, TrialSetup<CoordType> &input
     for (int r : s.cellRegion) ++cells[r];
     for (int r = 0; r < regionCount; ++r)
         if (cells[r] > 1) flag(r, RegionFault::NotDisc);
-    MeasureFacingAway(s, pass, defects.degenerate, *input.grid, input.normal, input.sampled, trial);
+    MeasureFacingAway(s, pass, defects.degenerate, *input.grid, input.sampled, trial);
     for (int r = 0; r < regionCount; ++r)
         if (trial.facingAway[r] > kFacingAwayShare) flag(r, RegionFault::FacesAway);
     for (const PassDefects::Crossing &crossing : defects.crossings) flag(s.cellRegion[crossing.cell], RegionFault::Folds);

@@ -66,6 +66,12 @@ struct MeshingSurface
     int FaceCount() const { return int(faces.size()); }
     int CellCount() const { return int(cellRegion.size()); }
     int CellFaceCount(int c) const { return cellFaceOffset[c + 1] - cellFaceOffset[c]; }
+    /// Face f's normal times twice its area, following its vertex order.
+    Point3d DoubleAreaVector(int f) const
+    {
+        const auto &t = faces[f];
+        return (positions[t[1]] - positions[t[0]]) ^ (positions[t[2]] - positions[t[0]]);
+    }
 };
 
 namespace detail {
@@ -346,7 +352,7 @@ inline void MeasureCells(MeshingSurface &s)
         double doubleArea = 0;
         for (int k = s.cellFaceOffset[c]; k < s.cellFaceOffset[c + 1]; ++k) {
             const auto &t = s.faces[s.cellFaces[k]];
-            const Point3d n = (s.positions[t[1]] - s.positions[t[0]]) ^ (s.positions[t[2]] - s.positions[t[0]]);
+            const Point3d n = s.DoubleAreaVector(s.cellFaces[k]);
             const double norm = n.Norm();
             areaVector += n;
             doubleArea += norm;

@@ -184,16 +184,8 @@ template <class Graph, class Metric, class Neighbors>
 void PrepareNodes(const Graph &mesh, const Metric &metric, PartitionWorkspace<Metric, Neighbors> &ws)
 {
     if (int(ws.nodes.size()) == mesh.FaceCount()) return;
-    // Grown a chunk at a time: zeroing the nodes of millions of faces (64 bytes each) takes long
-    // enough to report on.
     ws.nodes.clear();
-    ws.nodes.reserve(size_t(mesh.FaceCount()));
-    for (size_t size = 0; size < size_t(mesh.FaceCount());) {
-        const size_t grown = std::min(size_t(mesh.FaceCount()), size + kChunkItems);
-        ws.nodes.resize(grown);
-        ProgressTick(double(grown - size));
-        size = grown;
-    }
+    ResizeReporting(ws.nodes, size_t(mesh.FaceCount()));
     ForEachChunk(size_t(mesh.FaceCount()), [&](int, size_t begin, size_t end) {
         for (size_t f = begin; f < end; ++f) {
             ws.nodes[f].region = 0;
@@ -313,6 +305,39 @@ int FloodWithin(const Graph &mesh, const Metric &metric, const std::vector<Proxy
     int unreached = 0;
     for (int f : faces) {
         unreached += !detail::TakeLabel(ws.nodes[f], faceRegion[f]);
+        progress.Count();
+    }
+    return unreached;
+}
+
+/// FloodWithin on nodes of `faces` alone, which it puts in `ws` (a workspace of its own, not the
+/// mesh's): the same labels, without 64 bytes of nodes for every face of the mesh. For the
+/// meshable split, which runs after Run released the mesh's nodes to leave the meshing room.
+template <class Graph, class Metric>
+int FloodWithinAlone(const Graph &mesh, const Metric &metric, const std::vector<Proxy> &proxies,
+                     const std::vector<std::pair<int, int>> &seeds, const std::vector<int> &faces,
+                     std::vector<int> &faceRegion, PartitionWorkspace<Metric> &ws)
+{
+    const auto local = [&faces](int f) {  // f's index in `faces`, or -1: a wall, as outside FloodWithin's
+        const auto at = std::lower_bound(faces.begin(), faces.end(), f);
+        return at != faces.end() && *at == f ? int(at - faces.begin()) : -1;
+    };
+    ws.nodes.resize(faces.size());
+    ProgressCounter progress;
+    for (size_t i = 0; i < faces.size(); ++i) {
+        auto &node = ws.nodes[i];
+        node.queuedRank = FloodQueue::kNoRank;
+        node.region = -1;
+        for (int k = 0; k < 3; ++k) node.neighbors[k] = local(mesh.neighbors[faces[i]][k]);
+        node.data = metric.Data(faces[i]);
+        progress.Count();
+    }
+    std::vector<std::pair<int, int>> localSeeds;
+    for (const auto &[region, face] : seeds) localSeeds.emplace_back(region, local(face));
+    detail::Flood(metric, proxies, localSeeds, ws);
+    int unreached = 0;
+    for (size_t i = 0; i < faces.size(); ++i) {
+        unreached += !detail::TakeLabel(ws.nodes[i], faceRegion[faces[i]]);
         progress.Count();
     }
     return unreached;

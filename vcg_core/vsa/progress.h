@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cstddef>
+#include <vector>
 
 namespace vcg {
 namespace tri {
@@ -127,6 +128,21 @@ private:
 inline void ProgressTick(double items)
 {
     if (ProgressStage *stage = ProgressStage::Current()) stage->Advance(items);
+}
+
+/// Resizes `v` to `n` items a kProgressItems at a time, each a tick: value-initialising (and
+/// first touching) the memory of millions of items takes long enough to report on.
+template <class T>
+void ResizeReporting(std::vector<T> &v, size_t n)
+{
+    v.reserve(n);
+    for (size_t size = v.size(); size < n;) {
+        const size_t grown = std::min(n, size + size_t(kProgressItems));
+        v.resize(grown);
+        ProgressTick(double(grown - size));
+        size = grown;
+    }
+    v.resize(n);
 }
 
 /// Counts a sequential loop's items and passes them on to ProgressTick every kProgressItems, and

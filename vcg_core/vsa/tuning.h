@@ -27,7 +27,7 @@ constexpr double kRoundItems = 8;   ///< a doubling round's insertions, which to
 
 // Meshable partition (meshable_partition.h).
 constexpr double kTrialSetupEnd = 5;     ///< percent of the stage's bar for setting up the trials, about one trial's work
-constexpr double kTrialSetupItems = 30;  ///< progress items per face of it (measured at 3.3M): the surface, its grid, a copy, the normals
+constexpr double kTrialSetupItems = 29;  ///< progress items per face of it (measured at 3.3M): the surface, its grid, a copy
 constexpr double kTrialItems = 16;       ///< per face of a trial: its regions and cells, the chord bound, its pass, the stray test, choosing split faces, the split
 constexpr double kInputPairsItems = 12;  ///< per face, in the first trial only: the grid and shapes of the input's faces for their own intersections
 constexpr int kNearestFaceItems = 128;   ///< a nearest-face query of the facing-away test takes about as long as 128 faces' share of a pass
