@@ -242,3 +242,33 @@ TEST(PartitionFlood, GrowRegionStealsOnlyWhatItFitsBetterAndEmptiesNoRegion)
     EXPECT_NEAR(s.Energy(), total, 1e-12 * total);
     EXPECT_LT(s.Energy(), before.Energy());
 }
+
+TEST(PartitionFlood, FloodWithinAloneLabelsAsTheFloodWithWalls)
+{
+    // Three regions' faces freed, two of them seeded: on nodes of those faces alone, the labels
+    // and the unreached faces are those of the flood on the whole mesh with every other face a wall.
+    const IndexedMesh im = vsa_test::LoadCgalMesh("fandisk.off");
+    for (bool l2 : {false, true}) {
+        const FaceGeometry g = ComputeFaceGeometry(im, l2);
+        const auto check = [&](const auto &metric) {
+            const RegionState s = SeededState(im, metric, g, 30, 5);
+            std::vector<int> walls = s.partition.faceRegion, faces;
+            std::vector<int> seeds(30, -1);
+            for (int r : {3, 4}) seeds[r] = s.seeds[r];
+            for (int f = 0; f < im.FaceCount(); ++f) {
+                const int r = walls[f];
+                if (r == 3 || r == 4 || r == 7) walls[f] = -1, faces.push_back(f);
+            }
+            PartitionWorkspace<std::decay_t<decltype(metric)>> whole, alone;
+            const int unreached = FloodRegions(im, metric, s.partition.proxies, seeds, walls, whole);
+            std::vector<int> label = s.partition.faceRegion;
+            EXPECT_EQ(FloodWithinAlone(im, metric, s.partition.proxies, {{3, seeds[3]}, {4, seeds[4]}}, faces,
+                                       label, alone),
+                      unreached);
+            EXPECT_EQ(label, walls);
+            EXPECT_EQ(alone.nodes.size(), faces.size());
+        };
+        if (l2) check(L2Metric(g));
+        else check(L21Metric(g));
+    }
+}
