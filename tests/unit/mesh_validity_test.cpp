@@ -155,18 +155,16 @@ TEST(MeshValidity, SliversSeenEdgeOnMeetOnlyWhereTheyAre)
                          {-120, -120, 999999995904},
                          {-120, -111, 0},     {-80, -77, 333333331968}};
     slivers.faces = {{0, 1, 2}, {3, 4, 5}};
-    const std::vector<detail::FaceShape> shape = {detail::ShapeOfFace(slivers, 0), detail::ShapeOfFace(slivers, 1)};
-    EXPECT_FALSE(detail::FacesIntersect(slivers, shape, 0, 1));
-    EXPECT_FALSE(detail::FacesIntersect(slivers, shape, 1, 0));
+    EXPECT_FALSE(detail::FacesIntersect(slivers, 0, 1));
+    EXPECT_FALSE(detail::FacesIntersect(slivers, 1, 0));
 
     // The same, moved by 1e-15: the first, seen from the second, keeps a sliver of area, and the
     // rounding of the 2D test put the far corner inside it. Faces farther apart than the
     // tolerances do not meet, whatever the tests say.
     slivers.positions[0] = {9.6817835222768895e-16, 1, 7.7800048997201391e-17};
     slivers.positions[4] = {-120, -111, 1.0038767675479583e-15};
-    const std::vector<detail::FaceShape> moved = {detail::ShapeOfFace(slivers, 0), detail::ShapeOfFace(slivers, 1)};
-    EXPECT_FALSE(detail::FacesIntersect(slivers, moved, 0, 1));
-    EXPECT_FALSE(detail::FacesIntersect(slivers, moved, 1, 0));
+    EXPECT_FALSE(detail::FacesIntersect(slivers, 0, 1));
+    EXPECT_FALSE(detail::FacesIntersect(slivers, 1, 0));
 }
 
 TEST(MeshValidity, CoincidentCornersCountAsShared)
@@ -222,14 +220,12 @@ TEST(MeshValidity, GridFindsTheSamePairsAsTestingEveryPair)
     // with a fresh mask every such pair with a fresh face, each once.
     const IndexedMesh soup = vsa_test::RandomTriangleSoup(60, 600, 5);
     const std::vector<char> degenerate = detail::DegenerateFaceMask(soup);
-    std::vector<detail::FaceShape> shape(soup.FaceCount());
-    for (int f = 0; f < soup.FaceCount(); ++f) shape[f] = detail::ShapeOfFace(soup, f);
     std::vector<char> fresh(soup.FaceCount(), 0);
     for (int f = 0; f < soup.FaceCount(); f += 3) fresh[f] = 1;
     std::vector<std::pair<int, int>> all, withFresh;
     for (int f = 0; f < soup.FaceCount(); ++f)
         for (int g = f + 1; g < soup.FaceCount(); ++g)
-            if (!degenerate[f] && !degenerate[g] && detail::FacesIntersect(soup, shape, f, g)) {
+            if (!degenerate[f] && !degenerate[g] && detail::FacesIntersect(soup, f, g)) {
                 all.emplace_back(f, g);
                 if (fresh[f] || fresh[g]) withFresh.emplace_back(f, g);
             }
@@ -313,14 +309,13 @@ TEST(MeshValidity, GridFindsTheSamePairsAsTestingEveryPairWithAClearance)
 {
     const IndexedMesh soup = vsa_test::RandomTriangleSoup(60, 600, 5);
     const std::vector<char> degenerate = detail::DegenerateFaceMask(soup);
-    const std::vector<detail::FaceShape> shape = detail::ShapesOfFaces(soup, degenerate);
     const double clearance = 0.005;
     std::vector<std::pair<int, int>> exact, within;
     for (int f = 0; f < soup.FaceCount(); ++f)
         for (int g = f + 1; g < soup.FaceCount(); ++g) {
             if (degenerate[f] || degenerate[g]) continue;
-            if (detail::FacesIntersect(soup, shape, f, g)) exact.emplace_back(f, g);
-            if (detail::FacesIntersect(soup, shape, f, g, clearance)) within.emplace_back(f, g);
+            if (detail::FacesIntersect(soup, f, g)) exact.emplace_back(f, g);
+            if (detail::FacesIntersect(soup, f, g, clearance)) within.emplace_back(f, g);
         }
     ASSERT_GT(within.size(), exact.size() + 20);
     EXPECT_TRUE(std::includes(within.begin(), within.end(), exact.begin(), exact.end()));

@@ -287,23 +287,24 @@ inline bool CornersBefore(const IndexedMesh &im, int f, int g)
 /// Whether faces f and g of `im` meet anywhere but at their shared corners. Corners are
 /// shared when they are at the same place, whether or not they are the same vertex: faces of
 /// an unmerged mesh, or of a mesh whose non-manifold vertex was split, that touch only along
-/// their common corners do not intersect. `shape` is ShapeOfFace of every face. The answer
-/// depends on the two triangles only, not on their numbering or the order of f and g (the
+/// their common corners do not intersect. The answer depends on the two triangles only, not on their numbering or the order of f and g (the
 /// tests below are not symmetric in rounding): FindDefects reuses it for a later pass.
 /// With a `clearance` > 0, faces that come closer than it to each other beyond their shared
 /// corners count as meeting too, as they could once each corner moves by half of it (see
 /// SavedCoordinateClearance): disjoint faces closer than that; faces on one corner where the
 /// edge opposite it on one face comes that close to the other face; faces on an edge whose
 /// other corners lie within that of the same half-plane (folded flat onto each other).
-inline bool FacesIntersect(const IndexedMesh &im, const std::vector<FaceShape> &shape, int f, int g,
-                           double clearance = 0)
+inline bool FacesIntersect(const IndexedMesh &im, int f, int g, double clearance = 0)
 {
     if (CornersBefore(im, g, f)) std::swap(f, g);
     const auto &tf = im.faces[f], &tg = im.faces[g];
     const auto &P = im.positions;
+    // Computed here, not stored: only the pairs that the grid's boxes leave get here, and an
+    // array of every input face's shape took 32 bytes a face.
+    const FaceShape shapeF = ShapeOfFace(im, f), shapeG = ShapeOfFace(im, g);
     // Faces farther apart than the tolerances below do not meet, whatever the rounding of the
     // tests (two slivers 1e12 long and 40 apart passed them): the grids rely on it (PairGridMargin).
-    const double longest = std::max(shape[f].longestEdge, shape[g].longestEdge);
+    const double longest = std::max(shapeF.longestEdge, shapeG.longestEdge);
     const double reach = std::max(clearance, kOnPlane * longest);
     for (int axis = 0; axis < 3; ++axis) {
         const auto [fLow, fHigh] = std::minmax({P[tf[0]][axis], P[tf[1]][axis], P[tf[2]][axis]});
@@ -320,7 +321,7 @@ inline bool FacesIntersect(const IndexedMesh &im, const std::vector<FaceShape> &
             }
     if (shared == 3) return false;  // a duplicate face (counted as such if it shares vertices)
     const Point3d a = P[tf[0]], b = P[tf[1]], c = P[tf[2]];
-    const Point3d &nf = shape[f].normal, &ng = shape[g].normal;
+    const Point3d &nf = shapeF.normal, &ng = shapeG.normal;
     const int axis = DominantAxis(nf);
     // Heights of g's corners over f's plane and of f's corners over g's plane, each needed
     // by two of the edge-triangle tests below.
@@ -435,24 +436,13 @@ inline double PairGridMargin(const IndexedMesh &im, double clearance)
     return std::max(clearance / 2, box.IsNull() ? 0.0 : kOnPlane * box.Diag());
 }
 
-/// ShapeOfFace of every face of `im` not flagged in `degenerate`.
-inline std::vector<FaceShape> ShapesOfFaces(const IndexedMesh &im, const std::vector<char> &degenerate)
-{
-    std::vector<FaceShape> shape;
-    ResizeReporting(shape, im.faces.size());
-    ProgressCounter progress;
-    for (int f = 0; f < im.FaceCount(); ++f, progress.Count())
-        if (!degenerate[f]) shape[f] = ShapeOfFace(im, f);
-    return shape;
-}
-
 /// Calls met(g) for each face g in `grid` (built on `im` with PairGridMargin)
 /// that face f intersects, or comes within `clearance` of (see FacesIntersect), except f itself
 /// and the faces `skip(g)` leaves out. `metFrom` (one entry per face, never f before) records
 /// each g met from f, so that it is tested once.
 template <class Skip, class Met>
-void ForEachIntersectingFace(const IndexedMesh &im, const std::vector<FaceShape> &shape, const SurfaceGrid &grid,
-                             int f, std::vector<int> &metFrom, Skip skip, Met met, double clearance = 0)
+void ForEachIntersectingFace(const IndexedMesh &im, const SurfaceGrid &grid, int f, std::vector<int> &metFrom,
+                             Skip skip, Met met, double clearance = 0)
 {
     const Box3d box = grid.FaceBox(f);
     grid.ForEachCellOfFace(f, [&](size_t cell) {
@@ -462,7 +452,7 @@ void ForEachIntersectingFace(const IndexedMesh &im, const std::vector<FaceShape>
             if (g == f || skip(g) || metFrom[g] == f) continue;
             metFrom[g] = f;
             // The grid's boxes first: they keep most pairs apart without reading the faces' shapes.
-            if (BoxesTouch(box, grid.FaceBox(g)) && FacesIntersect(im, shape, f, g, clearance)) met(g);
+            if (BoxesTouch(box, grid.FaceBox(g)) && FacesIntersect(im, f, g, clearance)) met(g);
         }
     });
 }
@@ -483,14 +473,13 @@ inline std::vector<std::pair<int, int>> SelfIntersectingPairs(const IndexedMesh 
     std::vector<char> outOfGrid(faceCount);
     for (int f = 0; f < faceCount; ++f) outOfGrid[f] = degenerate[f] || !isFresh(f);
     const SurfaceGrid grid(im.positions, im.faces, outOfGrid, PairGridMargin(im, clearance));
-    const std::vector<FaceShape> shape = ShapesOfFaces(im, degenerate);
     std::vector<int> metFrom(faceCount, -1);
     std::vector<std::pair<int, int>> pairs;
     for (int f = 0; f < faceCount; ++f) {
         if (degenerate[f]) continue;
         const bool freshF = isFresh(f);
         ForEachIntersectingFace(
-            im, shape, grid, f, metFrom, [&](int g) { return freshF && g < f; },
+            im, grid, f, metFrom, [&](int g) { return freshF && g < f; },
             [&](int g) { pairs.emplace_back(std::min(f, g), std::max(f, g)); }, clearance);
     }
     std::sort(pairs.begin(), pairs.end());

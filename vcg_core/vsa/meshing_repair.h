@@ -216,16 +216,14 @@ public:
                 freshFaces.push_back(source);
             }
         }
-        if (!freshFaces.empty() && !grid_) {
-            shape_ = ShapesOfFaces(in_, Degenerate());
+        if (!freshFaces.empty() && !grid_)
             grid_ = std::make_unique<SurfaceGrid>(in_.positions, in_.faces, Degenerate(), PairGridMargin(in_, 0));
-        }
         std::vector<int> metFrom(freshFaces.empty() ? 0 : in_.FaceCount(), -1);
         for (int f : freshFaces) {
             progress.Count();
             if (degenerate_[f]) continue;
             ForEachIntersectingFace(
-                in_, shape_, *grid_, f, metFrom, [&](int g) { return fresh[g] && g < f; },  // tested from g
+                in_, *grid_, f, metFrom, [&](int g) { return fresh[g] && g < f; },  // tested from g
                 [&](int g) { intersecting_[f] = intersecting_[g] = 1; });
         }
         return CellsWithFacesFlagged(s, cells, intersecting_);
@@ -257,7 +255,6 @@ private:
     const IndexedMesh &in_;
     std::vector<char> tested_, intersecting_;  ///< per input face
     std::vector<char> degenerate_;             ///< per input face, once needed (see Degenerate)
-    std::vector<FaceShape> shape_;
     std::unique_ptr<SurfaceGrid> grid_;
 };
 

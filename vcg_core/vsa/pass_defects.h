@@ -122,11 +122,8 @@ inline PassDefects FindDefects(const MeshingPass &pass, double clearance, const 
     }
     // Pairs found now meet or are close; the exact test tells which.
     const std::vector<std::pair<int, int>> found = SelfIntersectingPairs(output, defects.degenerate, fresh, clearance);
-    std::vector<FaceShape> shape(clearance > 0 ? output.faces.size() : 0);
-    if (clearance > 0)
-        for (const auto &[f, g] : found) shape[f] = ShapeOfFace(output, f), shape[g] = ShapeOfFace(output, g);
     for (const auto &[f, g] : found)
-        (clearance <= 0 || FacesIntersect(output, shape, f, g) ? defects.intersections : defects.closePairs)
+        (clearance <= 0 || FacesIntersect(output, f, g) ? defects.intersections : defects.closePairs)
             .emplace_back(f, g);
     if (previous) {  // a pair of repeated faces is as it was
         auto carry = [&](const std::vector<std::pair<int, int>> &known, std::vector<std::pair<int, int>> &into) {
