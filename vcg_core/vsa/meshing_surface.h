@@ -13,6 +13,7 @@
 #include <array>
 #include <cmath>
 #include <deque>
+#include <memory>
 #include <numeric>
 #include <string>
 #include <vector>
@@ -20,6 +21,40 @@
 namespace vcg {
 namespace tri {
 namespace vsa {
+
+/// One of the surface's arrays that do not depend on the partition (positions, faces, their
+/// links), which copies of a surface share: set once by BuildSurfaceTopology, read-only after.
+/// The meshable split relabels two surfaces in turn, and the halving rounds copy theirs.
+template <class T>
+class SharedArray
+{
+public:
+    SharedArray &operator=(std::vector<T> &&values)
+    {
+        auto shared = std::make_shared<const std::vector<T>>(std::move(values));
+        data_ = shared->data();
+        size_ = shared->size();
+        values_ = std::move(shared);
+        return *this;
+    }
+    const T &operator[](size_t i) const { return data_[i]; }
+    size_t size() const { return size_; }
+    bool empty() const { return size_ == 0; }
+    const T *begin() const { return data_; }
+    const T *end() const { return data_ + size_; }
+    operator const std::vector<T> &() const { return values_ ? *values_ : Empty(); }
+
+private:
+    static const std::vector<T> &Empty()
+    {
+        static const std::vector<T> empty;
+        return empty;
+    }
+
+    std::shared_ptr<const std::vector<T>> values_;
+    const T *data_ = nullptr;  ///< values_'s, read without going through the shared pointer
+    size_t size_ = 0;
+};
 
 /// The partitioned input as an oriented 2-manifold with boundary, cut into disc cells.
 ///
@@ -31,17 +66,17 @@ namespace vsa {
 /// the topology needs, and the output faces of all its cells still belong to the region.
 struct MeshingSurface
 {
-    std::vector<Point3d> positions;          ///< per vertex
-    std::vector<int> sourceVertex;           ///< vertex -> IndexedMesh vertex
-    std::vector<std::array<int, 3>> faces;   ///< in the input's orientation
-    std::vector<std::array<int, 3>> neighbors;  ///< face across edge i (faces[f][i] -> faces[f][i+1]), -1 on border
-    std::vector<int> sourceFace;             ///< face -> IndexedMesh face
+    SharedArray<Point3d> positions;          ///< per vertex
+    SharedArray<int> sourceVertex;           ///< vertex -> IndexedMesh vertex
+    SharedArray<std::array<int, 3>> faces;   ///< in the input's orientation
+    SharedArray<std::array<int, 3>> neighbors;  ///< face across edge i (faces[f][i] -> faces[f][i+1]), -1 on border
+    SharedArray<int> sourceFace;             ///< face -> IndexedMesh face
     std::vector<int> faceRegion;             ///< face -> region (partition label)
     std::vector<int> facePiece;              ///< face -> piece of its region: no cell spans two (see HalveCells)
     std::vector<int> faceCell;               ///< face -> cell
     std::vector<int> cellRegion;             ///< cell -> region
     std::vector<int> cellFaceOffset, cellFaces;      ///< faces of cell c: cellFaces[cellFaceOffset[c] .. c+1)
-    std::vector<int> vertexFaceOffset, vertexFaces;  ///< faces around vertex v, same layout
+    SharedArray<int> vertexFaceOffset, vertexFaces;  ///< faces around vertex v, same layout
     /// The boundary loop of each cell: its vertices in order, the cell on the left (the
     /// loop runs along the input's half-edges). cellLoopOther[c][i] is the cell across the
     /// loop edge loop[i] -> loop[i+1], or -1 where that edge is on the mesh border.
@@ -76,8 +111,10 @@ struct MeshingSurface
 
 namespace detail {
 
-/// Index j of the edge of face g that runs opposite to edge i of face f (its twin).
-inline int TwinEdge(const MeshingSurface &s, int f, int i)
+/// Index j of the edge of face g that runs opposite to edge i of face f (its twin), on a
+/// MeshingSurface or a linked IndexedMesh.
+template <class Mesh>
+int TwinEdge(const Mesh &s, int f, int i)
 {
     const int g = s.neighbors[f][i], from = s.faces[f][(i + 1) % 3];
     for (int j = 0; j < 3; ++j)
@@ -85,46 +122,46 @@ inline int TwinEdge(const MeshingSurface &s, int f, int i)
     return -1;
 }
 
-/// Gives every fan of faces around a vertex its own vertex, so that each vertex has one fan
-/// (a disc, or a half-disc on the border). Corners are joined across linked edges.
-inline void SplitVerticesPerFan(MeshingSurface &s)
+/// Gives every fan of faces around a vertex of `m` (linked) its own vertex, so that each vertex
+/// has one fan (a disc, or a half-disc on the border). Corners are joined across linked edges.
+/// `sourceVertex` gets each vertex's vertex of `m` before; returns how many vertices it added.
+inline int SplitVerticesPerFan(IndexedMesh &m, std::vector<int> &sourceVertex)
 {
-    const int faceCount = s.FaceCount();
+    const int faceCount = m.FaceCount();
     std::vector<int> cornerParent(size_t(faceCount) * 3);
     std::iota(cornerParent.begin(), cornerParent.end(), 0);
     for (int f = 0; f < faceCount; ++f)
         for (int i = 0; i < 3; ++i) {
-            const int g = s.neighbors[f][i];
+            const int g = m.neighbors[f][i];
             if (g < f) continue;  // each linked edge once; skips the border
-            const int j = TwinEdge(s, f, i);
+            const int j = TwinEdge(m, f, i);
             Unite(cornerParent, 3 * f + i, 3 * g + (j + 1) % 3);
             Unite(cornerParent, 3 * f + (i + 1) % 3, 3 * g + j);
         }
     std::vector<int> fanVertex(size_t(faceCount) * 3, -1);
     std::vector<Point3d> positions;
-    std::vector<int> sourceVertex;
+    sourceVertex.clear();
     ProgressCounter progress;
     for (int c = 0; c < 3 * faceCount; ++c) {
         progress.Count();
         const int root = FindRoot(cornerParent, c);
         if (fanVertex[root] < 0) {
-            const int v = s.faces[c / 3][c % 3];
+            const int v = m.faces[c / 3][c % 3];
             fanVertex[root] = int(positions.size());
-            positions.push_back(s.positions[v]);
-            sourceVertex.push_back(s.sourceVertex[v]);
+            positions.push_back(m.positions[v]);
+            sourceVertex.push_back(v);
         }
-        s.faces[c / 3][c % 3] = fanVertex[root];
+        m.faces[c / 3][c % 3] = fanVertex[root];
     }
-    std::vector<char> used(s.positions.size(), 0);
+    std::vector<char> used(m.positions.size(), 0);
     int inputVerticesUsed = 0;
     for (int v : sourceVertex)
         if (!used[v]) {
             used[v] = 1;
             ++inputVerticesUsed;
         }
-    s.splitVertices = int(positions.size()) - inputVerticesUsed;
-    s.positions.swap(positions);
-    s.sourceVertex.swap(sourceVertex);
+    m.positions.swap(positions);
+    return int(m.positions.size()) - inputVerticesUsed;
 }
 
 /// Grows disc cells over one connected set of faces of a region and assigns them cell ids.
@@ -511,6 +548,7 @@ inline bool BuildSurfaceTopology(const IndexedMesh &im, MeshingSurface &s, std::
         }
     IndexedMesh kept;
     kept.positions = im.positions;
+    std::vector<int> sourceFace;
     ProgressCounter progress;
     for (int f = 0; f < im.FaceCount(); ++f) {
         progress.Count();
@@ -520,7 +558,7 @@ inline bool BuildSurfaceTopology(const IndexedMesh &im, MeshingSurface &s, std::
             continue;
         }
         kept.faces.push_back(t);
-        s.sourceFace.push_back(f);
+        sourceFace.push_back(f);
     }
     if (kept.faces.empty()) {
         error = "the mesh has no faces with three distinct vertices";
@@ -530,19 +568,22 @@ inline bool BuildSurfaceTopology(const IndexedMesh &im, MeshingSurface &s, std::
     detail::LinkFaces(kept, diag);
     error = MeshingRefusal(diag);
     if (!error.empty()) return false;
+    std::vector<int> sourceVertex;
+    s.splitVertices = detail::SplitVerticesPerFan(kept, sourceVertex);
+
+    std::vector<int> vertexOfCorner, vertexFaceOffset, vertexFaces;
+    vertexOfCorner.reserve(kept.faces.size() * 3);
+    for (const auto &t : kept.faces)
+        for (int v : t) vertexOfCorner.push_back(v);
+    detail::BuildOffsets(vertexOfCorner, int(kept.positions.size()), vertexFaceOffset, vertexFaces);
+    for (int &corner : vertexFaces) corner /= 3;  // corner index -> face index
     s.positions = std::move(kept.positions);
-    s.sourceVertex.resize(s.positions.size());
-    std::iota(s.sourceVertex.begin(), s.sourceVertex.end(), 0);
+    s.sourceVertex = std::move(sourceVertex);
     s.faces = std::move(kept.faces);
     s.neighbors = std::move(kept.neighbors);
-    detail::SplitVerticesPerFan(s);
-
-    std::vector<int> vertexOfCorner;
-    vertexOfCorner.reserve(s.faces.size() * 3);
-    for (const auto &t : s.faces)
-        for (int v : t) vertexOfCorner.push_back(v);
-    detail::BuildOffsets(vertexOfCorner, s.VertexCount(), s.vertexFaceOffset, s.vertexFaces);
-    for (int &corner : s.vertexFaces) corner /= 3;  // corner index -> face index
+    s.sourceFace = std::move(sourceFace);
+    s.vertexFaceOffset = std::move(vertexFaceOffset);
+    s.vertexFaces = std::move(vertexFaces);
     return true;
 }
 
