@@ -194,3 +194,41 @@ TEST(PartitionMetrics, DegenerateFacesHaveNoNormalAndNoError)
     EXPECT_EQ(kept.point, Point3d(1, 2, 3));
     EXPECT_DOUBLE_EQ(kept.normal.Norm(), 1.0);
 }
+
+/// On the geometry of every third face of fandisk alone, the listed-faces metric gives each of
+/// those faces the bits of `Metric` on the whole mesh's geometry: data, errors, moments, scale.
+template <class Metric>
+void CheckListedFacesMetric(bool withSecondMoments)
+{
+    const IndexedMesh im = vsa_test::LoadCgalMesh("fandisk.off");
+    const FaceGeometry whole = ComputeFaceGeometry(im, withSecondMoments);
+    std::vector<int> faces;
+    for (int f = 1; f < im.FaceCount(); f += 3) faces.push_back(f);
+    const FaceGeometry some = ComputeFaceGeometryOf(im, faces, withSecondMoments, whole.maxArea, whole.diagonal);
+    ASSERT_EQ(some.FaceCount(), int(faces.size()));
+    const Metric metric(whole);
+    const ListedFacesMetric<Metric> listed(some, faces);
+    EXPECT_EQ(listed.ErrorScale(), metric.ErrorScale());
+    TestRandom random(3);
+    const Proxy p = RandomProxy(random);
+    typename Metric::Moments fromWhole = metric.EmptyMoments(Point3d(1, 0, 0));
+    typename Metric::Moments fromListed = listed.EmptyMoments(Point3d(1, 0, 0));
+    for (size_t i = 0; i < faces.size(); ++i) {
+        const int f = faces[i];
+        ASSERT_EQ(listed.Listed(f), int(i));
+        EXPECT_EQ(some.area[i], whole.area[f]);
+        EXPECT_EQ(some.normal[i], whole.normal[f]);
+        EXPECT_EQ(some.centroid[i], whole.centroid[f]);
+        EXPECT_EQ(listed.Error(f, p), metric.Error(f, p));
+        EXPECT_EQ(listed.Error(listed.Data(f), p), metric.Error(metric.Data(f), p));
+        metric.Add(fromWhole, f);
+        listed.Add(fromListed, f);
+    }
+    const Proxy a = metric.Fit(fromWhole, p), b = listed.Fit(fromListed, p);
+    EXPECT_EQ(a.point, b.point);
+    EXPECT_EQ(a.normal, b.normal);
+    EXPECT_EQ(metric.Energy(fromWhole, p), listed.Energy(fromListed, p));
+}
+
+TEST(PartitionMetrics, L21OnListedFacesIsTheSameBits) { CheckListedFacesMetric<L21Metric>(false); }
+TEST(PartitionMetrics, L2OnListedFacesIsTheSameBits) { CheckListedFacesMetric<L2Metric>(true); }

@@ -102,8 +102,11 @@ class Approximation
     template <class F>
     decltype(auto) WithMetric(F &&f)
     {
-        if (geometry_.FaceCount() != mesh_.FaceCount())
+        if (geometry_.FaceCount() != mesh_.FaceCount()) {
             geometry_ = ComputeFaceGeometry(mesh_, param_.metric == MetricKind::L2);
+            maxFaceArea_ = geometry_.maxArea;
+            diagonal_ = geometry_.diagonal;
+        }
         if (param_.metric == MetricKind::L2) return f(L2Metric(geometry_), l2Workspace_);
         return f(L21Metric(geometry_), l21Workspace_);
     }
@@ -318,15 +321,8 @@ public:
             if (regionFaces[i].size() < 2)
                 throw std::invalid_argument("Region " + std::to_string(regions[i]) +
                                             " has a single face: cannot split it.");
-        WithMetric([&](const auto &metric, auto &) {
-            PartitionWorkspace<std::decay_t<decltype(metric)>> regionNodes;  // see FloodWithinAlone
-            for (size_t i = 0; i < regions.size(); ++i) {
-                int face = faces[i];
-                if (face < 0 || face >= mesh_.FaceCount() || faceRegion[face] != regions[i] || state_.IsSeed(face))
-                    face = WorstFace(regionFaces[i]);
-                SplitRegion(metric, regionNodes, regions[i], face, regionFaces[i]);
-            }
-        });
+        if (param_.metric == MetricKind::L2) SplitListed<L2Metric>(regions, faces, regionFaces);
+        else SplitListed<L21Metric>(regions, faces, regionFaces);
         StartTracking(false);
     }
 
@@ -538,14 +534,32 @@ private:
         FitRegions(metric, state_, only);
     }
 
-    /// `faces`: the region's, ascending.
+    /// SplitEach's splits, each on the geometry and the flood's nodes of its region's faces
+    /// alone: Run released the whole mesh's, and the meshable split calls this beside its trials.
     template <class Metric>
-    void SplitRegion(const Metric &metric, PartitionWorkspace<Metric> &ws, int region, int seed,
-                     const std::vector<int> &faces)
+    void SplitListed(const std::vector<int> &regions, const std::vector<int> &faces,
+                     const std::vector<std::vector<int>> &regionFaces)
+    {
+        const auto &faceRegion = state_.partition.faceRegion;
+        PartitionWorkspace<ListedFacesMetric<Metric>> regionNodes;  // see FloodWithinAlone
+        for (size_t i = 0; i < regions.size(); ++i) {
+            int face = faces[i];
+            if (face < 0 || face >= mesh_.FaceCount() || faceRegion[face] != regions[i] || state_.IsSeed(face))
+                face = WorstFace(regionFaces[i]);
+            const FaceGeometry g = ComputeFaceGeometryOf(mesh_, regionFaces[i], param_.metric == MetricKind::L2,
+                                                         maxFaceArea_, diagonal_);
+            SplitRegion(ListedFacesMetric<Metric>(g, regionFaces[i]), regionNodes, regions[i], face, regionFaces[i]);
+        }
+    }
+
+    /// `faces`: the region's, ascending, the faces `metric` has.
+    template <class Metric>
+    void SplitRegion(const ListedFacesMetric<Metric> &metric, PartitionWorkspace<ListedFacesMetric<Metric>> &ws,
+                     int region, int seed, const std::vector<int> &faces)
     {
         auto &faceRegion = state_.partition.faceRegion;
         const int added = ProxyCount();
-        state_.partition.proxies.push_back(FitFace(metric, geometry_, seed));
+        state_.partition.proxies.push_back(FitFace(metric.Inner(), metric.Geometry(), metric.Listed(seed)));
         state_.seeds.push_back(seed);
         state_.regionEnergy.push_back(0);
         std::vector<char> only(ProxyCount(), 0);
@@ -602,6 +616,7 @@ private:
     IndexedMesh mesh_;
     Param param_;
     FaceGeometry geometry_;
+    double maxFaceArea_ = 0, diagonal_ = 0;  ///< geometry_'s, kept when Run releases it (see SplitListed)
     int targetCount_ = 0;
     double referenceEnergy_ = 0;
     std::vector<std::string> notes_;     ///< from the constructor: kept across Initialize()

@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 namespace vcg {
 namespace tri {
@@ -247,6 +248,44 @@ void SumMoments(const Metric &metric, KeyOf &&keyOf, size_t faceCount, std::vect
         faceCount, listed, moments, keyOf, [&](Moments &m, size_t f) { metric.Add(m, int(f)); },
         [&](Moments &m, const Moments &part) { metric.Add(m, part); });
 }
+
+/// `Metric` on the geometry of some faces only (ComputeFaceGeometryOf, entry i for faces[i]),
+/// called with the mesh's face indices: the same values as `Metric` on the whole mesh's
+/// geometry for those faces, and sums over them (FitRegions with their list) in the same order.
+/// For work confined to a few regions of a mesh whose geometry was released (SplitEach).
+template <class Metric>
+class ListedFacesMetric
+{
+public:
+    using Moments = typename Metric::Moments;
+    using FaceData = typename Metric::FaceData;
+
+    /// `faces`: ascending; both must outlive the metric.
+    ListedFacesMetric(const FaceGeometry &geometry, const std::vector<int> &faces)
+        : metric_(geometry), geometry_(&geometry), faces_(&faces)
+    {
+    }
+
+    /// Entry of face f (one of the faces) in the geometry.
+    int Listed(int f) const { return int(std::lower_bound(faces_->begin(), faces_->end(), f) - faces_->begin()); }
+    const Metric &Inner() const { return metric_; }
+    const FaceGeometry &Geometry() const { return *geometry_; }
+
+    FaceData Data(int face) const { return metric_.Data(Listed(face)); }
+    double Error(const FaceData &d, const Proxy &p) const { return metric_.Error(d, p); }
+    double Error(int face, const Proxy &p) const { return metric_.Error(Listed(face), p); }
+    double ErrorScale() const { return metric_.ErrorScale(); }
+    Moments EmptyMoments(const Point3d &reference) const { return metric_.EmptyMoments(reference); }
+    void Add(Moments &m, int face) const { metric_.Add(m, Listed(face)); }
+    void Add(Moments &m, const Moments &o) const { metric_.Add(m, o); }
+    Proxy Fit(const Moments &m, const Proxy &fallback) const { return metric_.Fit(m, fallback); }
+    double Energy(const Moments &m, const Proxy &p) const { return metric_.Energy(m, p); }
+
+private:
+    Metric metric_;
+    const FaceGeometry *geometry_;
+    const std::vector<int> *faces_;
+};
 
 }  // namespace vsa
 }  // namespace tri
