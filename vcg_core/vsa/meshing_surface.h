@@ -72,7 +72,7 @@ struct MeshingSurface
     SharedArray<std::array<int, 3>> neighbors;  ///< face across edge i (faces[f][i] -> faces[f][i+1]), -1 on border
     SharedArray<int> sourceFace;             ///< face -> IndexedMesh face
     std::vector<int> faceRegion;             ///< face -> region (partition label)
-    std::vector<int> facePiece;              ///< face -> piece of its region: no cell spans two (see HalveCells)
+    std::vector<int> facePiece;              ///< face -> piece of its region: no cell spans two (see HalveCells); empty: one piece per region
     std::vector<int> faceCell;               ///< face -> cell
     std::vector<int> cellRegion;             ///< cell -> region
     std::vector<int> cellFaceOffset, cellFaces;      ///< faces of cell c: cellFaces[cellFaceOffset[c] .. c+1)
@@ -101,6 +101,7 @@ struct MeshingSurface
     int FaceCount() const { return int(faces.size()); }
     int CellCount() const { return int(cellRegion.size()); }
     int CellFaceCount(int c) const { return cellFaceOffset[c + 1] - cellFaceOffset[c]; }
+    int PieceOf(int f) const { return facePiece.empty() ? 0 : facePiece[f]; }
     /// Face f's normal times twice its area, following its vertex order.
     Point3d DoubleAreaVector(int f) const
     {
@@ -160,6 +161,8 @@ inline int SplitVerticesPerFan(IndexedMesh &m, std::vector<int> &sourceVertex)
             used[v] = 1;
             ++inputVerticesUsed;
         }
+    positions.shrink_to_fit();  // the surface keeps these arrays: no room to spare
+    sourceVertex.shrink_to_fit();
     m.positions.swap(positions);
     return int(m.positions.size()) - inputVerticesUsed;
 }
@@ -353,13 +356,13 @@ inline void BuildCells(MeshingSurface &s)
     ProgressCounter progress;
     for (int start = 0; start < faceCount; ++start) {
         if (seen[start]) continue;
-        const int region = s.faceRegion[start], piece = s.facePiece[start], before = previousCell[start];
+        const int region = s.faceRegion[start], piece = s.PieceOf(start), before = previousCell[start];
         std::vector<int> component = {start};
         seen[start] = 1;
         bool inOneCell = before >= 0;
         for (size_t head = 0; head < component.size(); ++head)
             for (int g : s.neighbors[component[head]])
-                if (g >= 0 && !seen[g] && s.faceRegion[g] == region && s.facePiece[g] == piece) {
+                if (g >= 0 && !seen[g] && s.faceRegion[g] == region && s.PieceOf(g) == piece) {
                     seen[g] = 1;
                     component.push_back(g);
                     inOneCell &= previousCell[g] == before;
@@ -548,7 +551,9 @@ inline bool BuildSurfaceTopology(const IndexedMesh &im, MeshingSurface &s, std::
         }
     IndexedMesh kept;
     kept.positions = im.positions;
+    kept.faces.reserve(im.faces.size());  // the surface keeps these arrays: no room to spare
     std::vector<int> sourceFace;
+    sourceFace.reserve(im.faces.size());
     ProgressCounter progress;
     for (int f = 0; f < im.FaceCount(); ++f) {
         progress.Count();
@@ -598,7 +603,7 @@ inline bool AssignRegions(MeshingSurface &s, const std::vector<int> &faceRegion,
     s.faceRegion.resize(s.FaceCount());
     ProgressCounter progress;
     for (int f = 0; f < s.FaceCount(); ++f, progress.Count()) s.faceRegion[f] = faceRegion[s.sourceFace[f]];
-    s.facePiece.assign(s.FaceCount(), 0);
+    std::vector<int>().swap(s.facePiece);  // one piece per region, and no memory for it
     return detail::BuildCellsAndLoops(s, error);
 }
 
