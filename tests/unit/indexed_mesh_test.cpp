@@ -82,7 +82,7 @@ TEST(IndexedMesh, SkipsDeletedAndUnreferencedAndFlagsNaN)
     MeshDiagnostics diag;
     const IndexedMesh im = BuildIndexedMesh(m, &diag);
     EXPECT_EQ(im.FaceCount(), 1);
-    EXPECT_EQ(im.sourceFace[0], 1u);
+    EXPECT_EQ(im.sourceFace[0], 1);
     EXPECT_EQ(im.VertexCount(), 3);
     EXPECT_EQ(diag.unreferencedVertices, 2);  // vertex 0 (only in the deleted face) and 4
     EXPECT_EQ(diag.nonFiniteVertices, 1);

@@ -34,8 +34,8 @@ struct IndexedMesh
     std::vector<std::array<int, 3>> neighbors;
     std::vector<int> component;  ///< per face: connected component through `neighbors`
     int componentCount = 0;
-    std::vector<size_t> sourceFace;    ///< face f is m.face[sourceFace[f]]
-    std::vector<size_t> sourceVertex;  ///< vertex v is m.vert[sourceVertex[v]]
+    std::vector<int> sourceFace;    ///< face f is m.face[sourceFace[f]]
+    std::vector<int> sourceVertex;  ///< vertex v is m.vert[sourceVertex[v]]
 
     int FaceCount() const { return int(faces.size()); }
     int VertexCount() const { return int(positions.size()); }
@@ -318,12 +318,12 @@ IndexedMesh BuildIndexedMesh(const MeshType &m, MeshDiagnostics *diagnostics = n
             if (vertexIndex[vi] < 0) {
                 vertexIndex[vi] = int(im.positions.size());
                 im.positions.push_back(Point3d::Construct(m.vert[vi].cP()));
-                im.sourceVertex.push_back(vi);
+                im.sourceVertex.push_back(int(vi));
             }
             tri[k] = vertexIndex[vi];
         }
         im.faces.push_back(tri);
-        im.sourceFace.push_back(fi);
+        im.sourceFace.push_back(int(fi));
     }
     for (size_t vi = 0; vi < m.vert.size(); ++vi)
         if (!m.vert[vi].IsD() && vertexIndex[vi] < 0) ++diag.unreferencedVertices;

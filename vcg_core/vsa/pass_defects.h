@@ -167,7 +167,7 @@ inline bool WritesPass(const IndexedMesh &written, const MeshingPass &pass)
         if (written.positions[v] != pass.positions[written.sourceVertex[v]]) return false;
     for (size_t f = 0; f < written.faces.size(); ++f)
         for (int i = 0; i < 3; ++i)
-            if (written.sourceVertex[written.faces[f][i]] != size_t(pass.triangles[f][i])) return false;
+            if (written.sourceVertex[written.faces[f][i]] != pass.triangles[f][i]) return false;
     return true;
 }
 
