@@ -245,8 +245,9 @@ TEST(PartitionFlood, GrowRegionStealsOnlyWhatItFitsBetterAndEmptiesNoRegion)
 
 TEST(PartitionFlood, FloodWithinAloneLabelsAsTheFloodWithWalls)
 {
-    // Three regions' faces freed, two of them seeded: on nodes of those faces alone, the labels
-    // and the unreached faces are those of the flood on the whole mesh with every other face a wall.
+    // Three regions' faces freed, two of them seeded: on nodes and geometry of those faces alone,
+    // the labels and the unreached faces are those of the flood on the whole mesh with every
+    // other face a wall.
     const IndexedMesh im = vsa_test::LoadCgalMesh("fandisk.off");
     for (bool l2 : {false, true}) {
         const FaceGeometry g = ComputeFaceGeometry(im, l2);
@@ -259,11 +260,16 @@ TEST(PartitionFlood, FloodWithinAloneLabelsAsTheFloodWithWalls)
                 const int r = walls[f];
                 if (r == 3 || r == 4 || r == 7) walls[f] = -1, faces.push_back(f);
             }
-            PartitionWorkspace<std::decay_t<decltype(metric)>> whole, alone;
+            using Metric = std::decay_t<decltype(metric)>;
+            PartitionWorkspace<Metric> whole;
             const int unreached = FloodRegions(im, metric, s.partition.proxies, seeds, walls, whole);
+            const FaceGeometry some = ComputeFaceGeometryOf(im, faces, l2, g.maxArea, g.diagonal);
+            std::vector<int> entry(im.FaceCount(), -1);
+            for (size_t i = 0; i < faces.size(); ++i) entry[faces[i]] = int(i);
+            PartitionWorkspace<ListedFacesMetric<Metric>> alone;
             std::vector<int> label = s.partition.faceRegion;
-            EXPECT_EQ(FloodWithinAlone(im, metric, s.partition.proxies, {{3, seeds[3]}, {4, seeds[4]}}, faces,
-                                       label, alone),
+            EXPECT_EQ(FloodWithinAlone(im, ListedFacesMetric<Metric>(some, entry), s.partition.proxies,
+                                       {{3, seeds[3]}, {4, seeds[4]}}, faces, label, alone),
                       unreached);
             EXPECT_EQ(label, walls);
             EXPECT_EQ(alone.nodes.size(), faces.size());

@@ -206,8 +206,11 @@ void CheckListedFacesMetric(bool withSecondMoments)
     for (int f = 1; f < im.FaceCount(); f += 3) faces.push_back(f);
     const FaceGeometry some = ComputeFaceGeometryOf(im, faces, withSecondMoments, whole.maxArea, whole.diagonal);
     ASSERT_EQ(some.FaceCount(), int(faces.size()));
+    std::vector<int> entry(im.FaceCount(), -1);
+    for (size_t i = 0; i < faces.size(); ++i) entry[faces[i]] = int(i);
     const Metric metric(whole);
-    const ListedFacesMetric<Metric> listed(some, faces);
+    const ListedFacesMetric<Metric> listed(some, entry);
+    EXPECT_EQ(listed.Listed(0), -1);
     EXPECT_EQ(listed.ErrorScale(), metric.ErrorScale());
     TestRandom random(3);
     const Proxy p = RandomProxy(random);

@@ -542,13 +542,17 @@ private:
     {
         const auto &faceRegion = state_.partition.faceRegion;
         PartitionWorkspace<ListedFacesMetric<Metric>> regionNodes;  // see FloodWithinAlone
+        std::vector<int> listed(size_t(mesh_.FaceCount()), -1);     // per face: its entry in its region's geometry
         for (size_t i = 0; i < regions.size(); ++i) {
+            const std::vector<int> &own = regionFaces[i];
             int face = faces[i];
             if (face < 0 || face >= mesh_.FaceCount() || faceRegion[face] != regions[i] || state_.IsSeed(face))
-                face = WorstFace(regionFaces[i]);
-            const FaceGeometry g = ComputeFaceGeometryOf(mesh_, regionFaces[i], param_.metric == MetricKind::L2,
-                                                         maxFaceArea_, diagonal_);
-            SplitRegion(ListedFacesMetric<Metric>(g, regionFaces[i]), regionNodes, regions[i], face, regionFaces[i]);
+                face = WorstFace(own);
+            const FaceGeometry g =
+                ComputeFaceGeometryOf(mesh_, own, param_.metric == MetricKind::L2, maxFaceArea_, diagonal_);
+            for (size_t k = 0; k < own.size(); ++k) listed[own[k]] = int(k);
+            SplitRegion(ListedFacesMetric<Metric>(g, listed), regionNodes, regions[i], face, own);
+            for (int f : own) listed[f] = -1;
         }
     }
 

@@ -250,7 +250,7 @@ void SumMoments(const Metric &metric, KeyOf &&keyOf, size_t faceCount, std::vect
 }
 
 /// `Metric` on the geometry of some faces only (ComputeFaceGeometryOf, entry i for faces[i]),
-/// called with the mesh's face indices: the same values as `Metric` on the whole mesh's
+/// called with the mesh's face indices (a per-face map gives each its entry): the same values as `Metric` on the whole mesh's
 /// geometry for those faces, and sums over them (FitRegions with their list) in the same order.
 /// For work confined to a few regions of a mesh whose geometry was released (SplitEach).
 template <class Metric>
@@ -260,14 +260,15 @@ public:
     using Moments = typename Metric::Moments;
     using FaceData = typename Metric::FaceData;
 
-    /// `faces`: ascending; both must outlive the metric.
-    ListedFacesMetric(const FaceGeometry &geometry, const std::vector<int> &faces)
-        : metric_(geometry), geometry_(&geometry), faces_(&faces)
+    /// `listed`: per face of the mesh, its entry in `geometry`, or -1 for a face that is not one
+    /// of the faces (never asked about, but for Listed); both must outlive the metric.
+    ListedFacesMetric(const FaceGeometry &geometry, const std::vector<int> &listed)
+        : metric_(geometry), geometry_(&geometry), listed_(&listed)
     {
     }
 
-    /// Entry of face f (one of the faces) in the geometry.
-    int Listed(int f) const { return int(std::lower_bound(faces_->begin(), faces_->end(), f) - faces_->begin()); }
+    /// Entry of face f in the geometry, or -1 when f is not one of the faces.
+    int Listed(int f) const { return (*listed_)[f]; }
     const Metric &Inner() const { return metric_; }
     const FaceGeometry &Geometry() const { return *geometry_; }
 
@@ -284,7 +285,7 @@ public:
 private:
     Metric metric_;
     const FaceGeometry *geometry_;
-    const std::vector<int> *faces_;
+    const std::vector<int> *listed_;
 };
 
 }  // namespace vsa

@@ -311,29 +311,29 @@ int FloodWithin(const Graph &mesh, const Metric &metric, const std::vector<Proxy
 }
 
 /// FloodWithin on nodes of `faces` alone, which it puts in `ws` (a workspace of its own, not the
-/// mesh's): the same labels, without 64 bytes of nodes for every face of the mesh. For the
-/// meshable split, which runs after Run released the mesh's nodes to leave the meshing room.
+/// mesh's): the same labels, without 64 bytes of nodes for every face of the mesh. `metric` has
+/// the geometry of `faces`; a face it does not list is a wall, as outside FloodWithin's faces.
+/// For the meshable split, which runs after Run released the mesh's nodes to leave the meshing room.
 template <class Graph, class Metric>
-int FloodWithinAlone(const Graph &mesh, const Metric &metric, const std::vector<Proxy> &proxies,
+int FloodWithinAlone(const Graph &mesh, const ListedFacesMetric<Metric> &metric, const std::vector<Proxy> &proxies,
                      const std::vector<std::pair<int, int>> &seeds, const std::vector<int> &faces,
-                     std::vector<int> &faceRegion, PartitionWorkspace<Metric> &ws)
+                     std::vector<int> &faceRegion, PartitionWorkspace<ListedFacesMetric<Metric>> &ws)
 {
-    const auto local = [&faces](int f) {  // f's index in `faces`, or -1: a wall, as outside FloodWithin's
-        const auto at = std::lower_bound(faces.begin(), faces.end(), f);
-        return at != faces.end() && *at == f ? int(at - faces.begin()) : -1;
-    };
     ws.nodes.resize(faces.size());
     ProgressCounter progress;
     for (size_t i = 0; i < faces.size(); ++i) {
         auto &node = ws.nodes[i];
         node.queuedRank = FloodQueue::kNoRank;
         node.region = -1;
-        for (int k = 0; k < 3; ++k) node.neighbors[k] = local(mesh.neighbors[faces[i]][k]);
+        for (int k = 0; k < 3; ++k) {
+            const int g = mesh.neighbors[faces[i]][k];
+            node.neighbors[k] = g < 0 ? -1 : metric.Listed(g);
+        }
         node.data = metric.Data(faces[i]);
         progress.Count();
     }
     std::vector<std::pair<int, int>> localSeeds;
-    for (const auto &[region, face] : seeds) localSeeds.emplace_back(region, local(face));
+    for (const auto &[region, face] : seeds) localSeeds.emplace_back(region, metric.Listed(face));
     detail::Flood(metric, proxies, localSeeds, ws);
     int unreached = 0;
     for (size_t i = 0; i < faces.size(); ++i) {
