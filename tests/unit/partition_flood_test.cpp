@@ -63,6 +63,17 @@ RegionState SeededState(const IndexedMesh &mesh, const Metric &metric, const Fac
     return s;
 }
 
+/// Calls check(metric, its geometry, whether it has second moments) with L2,1 and with L2 on `im`.
+template <class Check>
+void ForBothMetrics(const IndexedMesh &im, Check check)
+{
+    for (bool l2 : {false, true}) {
+        const FaceGeometry g = ComputeFaceGeometry(im, l2);
+        if (l2) check(L2Metric(g), g, l2);
+        else check(L21Metric(g), g, l2);
+    }
+}
+
 }  // namespace
 
 TEST(PartitionFlood, RanksFollowTheErrorsToTwoPercent)
@@ -143,19 +154,14 @@ TEST(PartitionFlood, ResetEmptiesAQueueLeftWithCandidates)
 TEST(PartitionFlood, LabelsAreTheTextbookFloodsOnARealMesh)
 {
     const IndexedMesh im = vsa_test::LoadCgalMesh("fandisk.off");
-    for (bool l2 : {false, true}) {
-        const FaceGeometry g = ComputeFaceGeometry(im, l2);
-        const auto check = [&](const auto &metric) {
-            const RegionState s = SeededState(im, metric, g, 60, 11);
-            std::vector<int> label(im.FaceCount(), -1);
-            PartitionWorkspace<std::decay_t<decltype(metric)>> ws;
-            EXPECT_EQ(FloodRegions(im, metric, s.partition.proxies, s.seeds, label, ws), 0);
-            EXPECT_EQ(label, TextbookFlood(im, metric, s.partition.proxies, s.seeds));
-            EXPECT_EQ(vsa_test::CheckPartition(im, label, 60), "");
-        };
-        if (l2) check(L2Metric(g));
-        else check(L21Metric(g));
-    }
+    ForBothMetrics(im, [&](const auto &metric, const FaceGeometry &g, bool) {
+        const RegionState s = SeededState(im, metric, g, 60, 11);
+        std::vector<int> label(im.FaceCount(), -1);
+        PartitionWorkspace<std::decay_t<decltype(metric)>> ws;
+        EXPECT_EQ(FloodRegions(im, metric, s.partition.proxies, s.seeds, label, ws), 0);
+        EXPECT_EQ(label, TextbookFlood(im, metric, s.partition.proxies, s.seeds));
+        EXPECT_EQ(vsa_test::CheckPartition(im, label, 60), "");
+    });
 }
 
 TEST(PartitionFlood, TiesGrowBreadthFirstOnACube)
@@ -249,32 +255,27 @@ TEST(PartitionFlood, FloodWithinAloneLabelsAsTheFloodWithWalls)
     // the labels and the unreached faces are those of the flood on the whole mesh with every
     // other face a wall.
     const IndexedMesh im = vsa_test::LoadCgalMesh("fandisk.off");
-    for (bool l2 : {false, true}) {
-        const FaceGeometry g = ComputeFaceGeometry(im, l2);
-        const auto check = [&](const auto &metric) {
-            const RegionState s = SeededState(im, metric, g, 30, 5);
-            std::vector<int> walls = s.partition.faceRegion, faces;
-            std::vector<int> seeds(30, -1);
-            for (int r : {3, 4}) seeds[r] = s.seeds[r];
-            for (int f = 0; f < im.FaceCount(); ++f) {
-                const int r = walls[f];
-                if (r == 3 || r == 4 || r == 7) walls[f] = -1, faces.push_back(f);
-            }
-            using Metric = std::decay_t<decltype(metric)>;
-            PartitionWorkspace<Metric> whole;
-            const int unreached = FloodRegions(im, metric, s.partition.proxies, seeds, walls, whole);
-            const FaceGeometry some = ComputeFaceGeometryOf(im, faces, l2, g.maxArea, g.diagonal);
-            std::vector<int> entry(im.FaceCount(), -1);
-            for (size_t i = 0; i < faces.size(); ++i) entry[faces[i]] = int(i);
-            PartitionWorkspace<ListedFacesMetric<Metric>> alone;
-            std::vector<int> label = s.partition.faceRegion;
-            EXPECT_EQ(FloodWithinAlone(im, ListedFacesMetric<Metric>(some, entry), s.partition.proxies,
-                                       {{3, seeds[3]}, {4, seeds[4]}}, faces, label, alone),
-                      unreached);
-            EXPECT_EQ(label, walls);
-            EXPECT_EQ(alone.nodes.size(), faces.size());
-        };
-        if (l2) check(L2Metric(g));
-        else check(L21Metric(g));
-    }
+    ForBothMetrics(im, [&](const auto &metric, const FaceGeometry &g, bool l2) {
+        const RegionState s = SeededState(im, metric, g, 30, 5);
+        std::vector<int> walls = s.partition.faceRegion, faces;
+        std::vector<int> seeds(30, -1);
+        for (int r : {3, 4}) seeds[r] = s.seeds[r];
+        for (int f = 0; f < im.FaceCount(); ++f) {
+            const int r = walls[f];
+            if (r == 3 || r == 4 || r == 7) walls[f] = -1, faces.push_back(f);
+        }
+        using Metric = std::decay_t<decltype(metric)>;
+        PartitionWorkspace<Metric> whole;
+        const int unreached = FloodRegions(im, metric, s.partition.proxies, seeds, walls, whole);
+        const FaceGeometry some = ComputeFaceGeometryOf(im, faces, l2, g.maxArea, g.diagonal);
+        std::vector<int> entry(im.FaceCount(), -1);
+        for (size_t i = 0; i < faces.size(); ++i) entry[faces[i]] = int(i);
+        PartitionWorkspace<ListedFacesMetric<Metric>> alone;
+        std::vector<int> label = s.partition.faceRegion;
+        EXPECT_EQ(FloodWithinAlone(im, ListedFacesMetric<Metric>(some, entry), s.partition.proxies,
+                                   {{3, seeds[3]}, {4, seeds[4]}}, faces, label, alone),
+                  unreached);
+        EXPECT_EQ(label, walls);
+        EXPECT_EQ(alone.nodes.size(), faces.size());
+    });
 }

@@ -145,8 +145,8 @@ public:
 private:
     using QueueItem = std::pair<double, int>;  ///< distance, vertex
 
-    /// The edges around every vertex: the same whatever the cells. Their lengths are measured
-    /// when the Dijkstra crosses them: stored, they took 24 bytes a face.
+    /// The edges around every vertex: the same whatever the cells. The Dijkstra measures an edge
+    /// when it crosses it: a square root is cheaper than a length per edge kept for every pass.
     struct Edges
     {
         std::vector<int> offset;  ///< edges from vertex u: to[offset[u] .. u+1)

@@ -287,8 +287,9 @@ inline bool CornersBefore(const IndexedMesh &im, int f, int g)
 /// Whether faces f and g of `im` meet anywhere but at their shared corners. Corners are
 /// shared when they are at the same place, whether or not they are the same vertex: faces of
 /// an unmerged mesh, or of a mesh whose non-manifold vertex was split, that touch only along
-/// their common corners do not intersect. The answer depends on the two triangles only, not on their numbering or the order of f and g (the
-/// tests below are not symmetric in rounding): FindDefects reuses it for a later pass.
+/// their common corners do not intersect. The answer depends on the two triangles only, not on
+/// their numbering or the order of f and g (the tests below are not symmetric in rounding):
+/// FindDefects reuses it for a later pass.
 /// With a `clearance` > 0, faces that come closer than it to each other beyond their shared
 /// corners count as meeting too, as they could once each corner moves by half of it (see
 /// SavedCoordinateClearance): disjoint faces closer than that; faces on one corner where the
@@ -299,8 +300,8 @@ inline bool FacesIntersect(const IndexedMesh &im, int f, int g, double clearance
     if (CornersBefore(im, g, f)) std::swap(f, g);
     const auto &tf = im.faces[f], &tg = im.faces[g];
     const auto &P = im.positions;
-    // Computed here, not stored: only the pairs that the grid's boxes leave get here, and an
-    // array of every input face's shape took 32 bytes a face.
+    // Computed here rather than kept for every face: only the pairs whose grid boxes touch get
+    // here, a few per face tested, while an array would stay alive beside the meshing's own.
     const FaceShape shapeF = ShapeOfFace(im, f), shapeG = ShapeOfFace(im, g);
     // Faces farther apart than the tolerances below do not meet, whatever the rounding of the
     // tests (two slivers 1e12 long and 40 apart passed them): the grids rely on it (PairGridMargin).

@@ -72,7 +72,8 @@ struct MeshingSurface
     SharedArray<std::array<int, 3>> neighbors;  ///< face across edge i (faces[f][i] -> faces[f][i+1]), -1 on border
     SharedArray<int> sourceFace;             ///< face -> IndexedMesh face
     std::vector<int> faceRegion;             ///< face -> region (partition label)
-    std::vector<int> facePiece;              ///< face -> piece of its region: no cell spans two (see HalveCells); empty: one piece per region
+    /// face -> piece of its region: no cell spans two (see HalveCells); empty: one piece per region
+    std::vector<int> facePiece;
     std::vector<int> faceCell;               ///< face -> cell
     std::vector<int> cellRegion;             ///< cell -> region
     std::vector<int> cellFaceOffset, cellFaces;      ///< faces of cell c: cellFaces[cellFaceOffset[c] .. c+1)
@@ -391,8 +392,9 @@ inline void MeasureCells(MeshingSurface &s)
         Point3d areaVector(0, 0, 0), centroid(0, 0, 0);
         double doubleArea = 0;
         for (int k = s.cellFaceOffset[c]; k < s.cellFaceOffset[c + 1]; ++k) {
-            const auto &t = s.faces[s.cellFaces[k]];
-            const Point3d n = s.DoubleAreaVector(s.cellFaces[k]);
+            const int f = s.cellFaces[k];
+            const auto &t = s.faces[f];
+            const Point3d n = s.DoubleAreaVector(f);
             const double norm = n.Norm();
             areaVector += n;
             doubleArea += norm;

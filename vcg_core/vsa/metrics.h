@@ -250,8 +250,9 @@ void SumMoments(const Metric &metric, KeyOf &&keyOf, size_t faceCount, std::vect
 }
 
 /// `Metric` on the geometry of some faces only (ComputeFaceGeometryOf, entry i for faces[i]),
-/// called with the mesh's face indices (a per-face map gives each its entry): the same values as `Metric` on the whole mesh's
-/// geometry for those faces, and sums over them (FitRegions with their list) in the same order.
+/// called with the mesh's face indices (a per-face map gives each its entry): the same values
+/// as `Metric` on the whole mesh's geometry for those faces, and sums over them (FitRegions
+/// with their list) in the same order.
 /// For work confined to a few regions of a mesh whose geometry was released (SplitEach).
 template <class Metric>
 class ListedFacesMetric

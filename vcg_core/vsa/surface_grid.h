@@ -94,7 +94,8 @@ public:
 
     /// Calls visit(cell index) for each cell that face f is in, or would be in if the grid
     /// skipped it, and that holds faces (see CellsCrossedBy): the cells where it can meet the
-    /// faces of the grid. Found again at each call: stored, they took 8 to 10 bytes a face.
+    /// faces of the grid. Found again at each call rather than kept for every face: a face's
+    /// cells cost a box and a few plane tests, and the split keeps two grids alive at once.
     template <class Visit>
     void ForEachCellOfFace(int f, Visit visit) const
     {
