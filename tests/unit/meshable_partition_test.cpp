@@ -170,8 +170,7 @@ TEST(MeshablePartition, TrialsInTurnJudgeAsTrialsAfresh)
     for (int round = 0; round < 4; ++round) {
         const Partition &partition = approximation.CurrentPartition();
         const detail::SampledTriangles previous = inTurn.sampled;
-        const detail::RegionTrial a = detail::TrialMeshRegions<vcg::Point3f>(approximation.Mesh(), inTurn, partition,
-                                                                      approximation.SeedFaces(), meshable);
+        const detail::RegionTrial a = detail::TrialMeshRegions<vcg::Point3f>(inTurn, partition, meshable);
         // Every triangle's samples are kept for the next trial, and after the splits some are
         // taken from the last one's instead of measured again.
         const detail::MeshingPass &pass = inTurn.latest->Best().pass;
@@ -180,16 +179,19 @@ TEST(MeshablePartition, TrialsInTurnJudgeAsTrialsAfresh)
         for (int repeat : detail::RepeatedFaces(pass, inTurn.sampled.degenerate, previous.pass, previous.degenerate))
             kept += repeat >= 0;
         detail::TrialSetup<vcg::Point3f> afresh(approximation.Mesh(), meshing);
-        const detail::RegionTrial b = detail::TrialMeshRegions<vcg::Point3f>(approximation.Mesh(), afresh, partition,
-                                                                      approximation.SeedFaces(), meshable);
+        const detail::RegionTrial b = detail::TrialMeshRegions<vcg::Point3f>(afresh, partition, meshable);
         EXPECT_EQ(a.fault, b.fault) << "round " << round;
         EXPECT_EQ(a.facingAway, b.facingAway) << "round " << round;
-        EXPECT_EQ(a.splitFace, b.splitFace) << "round " << round;
         EXPECT_EQ(inTurn.latest->Best().pass.positions, afresh.latest->Best().pass.positions) << "round " << round;
         EXPECT_EQ(inTurn.latest->Best().pass.triangles, afresh.latest->Best().pass.triangles) << "round " << round;
         const std::vector<int> regions = detail::RegionsToSplit(a, partition);
         ASSERT_FALSE(regions.empty()) << "round " << round;  // the box's rings need splits
-        approximation.Split(regions.front(), a.splitFace[regions.front()]);
+        const std::vector<int> splitFaces =
+            detail::ChooseSplitFaces(inTurn, a, regions, approximation.SeedFaces(), approximation.Mesh());
+        EXPECT_EQ(splitFaces, detail::ChooseSplitFaces(afresh, b, regions, approximation.SeedFaces(),
+                                                       approximation.Mesh()))
+            << "round " << round;
+        approximation.Split(regions.front(), splitFaces.front());
     }
     EXPECT_GT(kept, 0);
 }

@@ -91,7 +91,6 @@ struct RegionTrial
 {
     std::vector<RegionFault> fault;  ///< per region, the worst
     std::vector<double> stray;       ///< per region, farthest input vertex from its triangles, over the bound
-    std::vector<int> splitFace;      ///< per region, the IndexedMesh face to split it at, or -1
     std::vector<double> facingAway;  ///< per region, the share of its triangles' area that faces away
 };
 
@@ -199,18 +198,23 @@ inline std::vector<double> RegionFit(const MeshingSurface &s, const std::vector<
     return fit;
 }
 
-/// Distance from p to the nearest of triangles [first, last) of `order` in `pass`.
+/// Distance from p to the nearest of triangles [first, last) of `order` in `pass`; or, as soon
+/// as one is no farther than `enough`, that one's distance (enough to know p is not the
+/// farthest point). Starts at triangle `hint` of the range, and leaves there the nearest one
+/// seen: neighbouring points are usually nearest to the same triangle.
 inline double DistanceToTriangles(const MeshingPass &pass, const std::vector<int> &order, int first, int last,
-                                  const Point3d &p)
+                                  const Point3d &p, double enough, int &hint)
 {
+    if (hint < first || hint >= last) hint = first;
     double nearest = std::numeric_limits<double>::infinity();
-    for (int k = first; k < last; ++k) {
+    for (int n = 0, k = hint; n < last - first; ++n, k = k + 1 < last ? k + 1 : first) {
         const auto &t = pass.triangles[order[k]];
         const vcg::Triangle3<double> tri(pass.positions[t[0]], pass.positions[t[1]], pass.positions[t[2]]);
         double d;
         Point3d closest;
         TrianglePointDistance(tri, p, d, closest);
-        nearest = std::min(nearest, d);
+        if (d < nearest) nearest = d, hint = k;
+        if (nearest <= enough) break;
     }
     return nearest;
 }
@@ -251,6 +255,8 @@ inline void MeasureStray(const MeshingSurface &s, const MeshingPass &pass, const
     const std::vector<double> fit = RegionFit(s, proxies);
     const std::vector<char> inside = InsideRegion(s);
     std::vector<char> measured(s.VertexCount(), 0);
+    const double exact = -std::numeric_limits<double>::infinity();
+    int hint = 0;
     ProgressCounter progress;
     for (int f = 0; f < s.FaceCount(); ++f) {
         progress.Count();
@@ -258,20 +264,26 @@ inline void MeasureStray(const MeshingSurface &s, const MeshingPass &pass, const
         for (int v : s.faces[f]) {
             if (!inside[v] || measured[v]) continue;
             measured[v] = 1;
-            const double d = DistanceToTriangles(pass, order, offset[r], offset[r + 1], s.positions[v]);
+            const double d = DistanceToTriangles(pass, order, offset[r], offset[r + 1], s.positions[v], exact, hint);
             trial.stray[r] = std::max(trial.stray[r], d / (strayFactor * fit[r] + kStrayAllowance * box.Diag()));
         }
     }
 }
 
-/// For each region at fault, where to split it: a region that is not a disc (a ring, a closed
-/// piece), which the meshing cut into discs, at its face farthest from its seed outside the
-/// seed's disc, so that the two seeds' floods meet on both sides of the hole; any other at its
-/// face farthest from its triangles, where its flat polygon misses the shape most.
-inline void ChooseSplitFaces(const MeshingSurface &s, const MeshingPass &pass, const std::vector<int> &seeds,
-                             const IndexedMesh &in, RegionTrial &trial)
+/// Where to split each of `regions` (at fault), as IndexedMesh faces in the same order, from
+/// the latest trial: a region that is not a disc (a ring, a closed piece), which the meshing
+/// cut into discs, at its face farthest from its seed outside the seed's disc, so that the two
+/// seeds' floods meet on both sides of the hole; any other at its face farthest from its
+/// triangles, where its flat polygon misses the shape most.
+template <class CoordType>
+std::vector<int> ChooseSplitFaces(const TrialSetup<CoordType> &input, const RegionTrial &trial,
+                                  const std::vector<int> &regions, const std::vector<int> &seeds, const IndexedMesh &in)
 {
+    const MeshingSurface &s = input.surfaces[input.latestSurface];
+    const MeshingPass &pass = input.latest->Best().pass;
     const int regionCount = int(trial.fault.size());
+    std::vector<char> chosen(regionCount, 0);
+    for (int r : regions) chosen[r] = 1;
     std::vector<int> offset, order;
     TrianglesByRegion(s, pass, regionCount, offset, order);
     auto centroid = [](const std::vector<Point3d> &p, const std::array<int, 3> &t) {
@@ -280,31 +292,39 @@ inline void ChooseSplitFaces(const MeshingSurface &s, const MeshingPass &pass, c
     std::vector<int> seedCell(regionCount, -1);
     for (int f = 0; f < s.FaceCount(); ++f)
         if (seeds[s.faceRegion[f]] == s.sourceFace[f]) seedCell[s.faceRegion[f]] = s.faceCell[f];
-    // Per region: (distance, face) of its farthest face so far. Chunks keep their first farthest
-    // face and merge in face order, so the first farthest face wins on any number of threads.
-    using Farthest = std::pair<double, int>;
-    std::vector<Farthest> farthest(regionCount, Farthest(-1, -1));
-    const auto distance = [&](int f) {
-        const int r = s.faceRegion[f];
-        const Point3d c = centroid(s.positions, s.faces[f]);
-        if (trial.fault[r] != RegionFault::NotDisc)
-            return DistanceToTriangles(pass, order, offset[r], offset[r + 1], c);
-        return (c - centroid(in.positions, in.faces[seeds[r]])).Norm();
+    // Per region: its farthest face so far. Chunks keep their first farthest face and merge in
+    // face order, so the first farthest face wins on any number of threads.
+    struct Farthest
+    {
+        double distance = -1;
+        int face = -1;
+        int hint = 0;  ///< the last face's nearest triangle (see DistanceToTriangles)
     };
+    std::vector<Farthest> farthest(regionCount);
     const auto keep = [](Farthest &best, const Farthest &candidate) {
-        if (candidate.first > best.first) best = candidate;
+        if (candidate.distance > best.distance) best.distance = candidate.distance, best.face = candidate.face;
     };
     SumByKey(
         size_t(s.FaceCount()), farthest,
         [&](size_t f) {
             const int r = s.faceRegion[f];
-            const bool measured = trial.fault[r] != RegionFault::None &&
-                                  (trial.fault[r] != RegionFault::NotDisc || s.faceCell[f] != seedCell[r]);
+            const bool measured =
+                chosen[r] && (trial.fault[r] != RegionFault::NotDisc || s.faceCell[f] != seedCell[r]);
             return measured ? r : -1;
         },
-        [&](Farthest &best, size_t f) { keep(best, Farthest(distance(int(f)), int(f))); }, keep);
-    for (int r = 0; r < regionCount; ++r)
-        if (farthest[r].second >= 0) trial.splitFace[r] = s.sourceFace[farthest[r].second];
+        [&](Farthest &best, size_t f) {
+            const int r = s.faceRegion[f];
+            const Point3d c = centroid(s.positions, s.faces[f]);
+            const double d =
+                trial.fault[r] != RegionFault::NotDisc
+                    ? DistanceToTriangles(pass, order, offset[r], offset[r + 1], c, best.distance, best.hint)
+                    : (c - centroid(in.positions, in.faces[seeds[r]])).Norm();
+            if (d > best.distance) best.distance = d, best.face = int(f);
+        },
+        keep);
+    std::vector<int> faces;
+    for (int r : regions) faces.push_back(farthest[r].face >= 0 ? s.sourceFace[farthest[r].face] : -1);
+    return faces;
 }
 
 /// Meshes `partition` once, each region as its polygon on its anchors (no repair, no halving),
@@ -312,14 +332,13 @@ inline void ChooseSplitFaces(const MeshingSurface &s, const MeshingPass &pass, c
 /// side, within the stray bound of its input, meeting no other region's triangles (unless the
 /// input meets itself there). Regions pass when the surface cannot be built: the meshing says why.
 template <class CoordType>
-RegionTrial TrialMeshRegions(const IndexedMesh &in, TrialSetup<CoordType> &input, const Partition &partition,
-                             const std::vector<int> &seeds, const MeshablePartitionParam &param)
+RegionTrial TrialMeshRegions(TrialSetup<CoordType> &input, const Partition &partition,
+                             const MeshablePartitionParam &param)
 {
     const int regionCount = int(partition.proxies.size());
     RegionTrial trial;
     trial.fault.assign(regionCount, RegionFault::None);
     trial.stray.assign(regionCount, 0);
-    trial.splitFace.assign(regionCount, -1);
     trial.facingAway.assign(regionCount, 0);
     if (!input.meshable) return trial;
     const int slot = 1 - input.latestSurface;
@@ -356,7 +375,6 @@ RegionTrial TrialMeshRegions(const IndexedMesh &in, TrialSetup<CoordType> &input
     const std::vector<char> inputMeets = input.intersections.CellsAmong(s, meeting);
     for (int c = 0; c < s.CellCount(); ++c)
         if (meeting[c] && !inputMeets[c]) flag(s.cellRegion[c], RegionFault::Intersects);
-    ChooseSplitFaces(s, pass, seeds, in, trial);
     return trial;
 }
 
@@ -396,8 +414,8 @@ MeshablePartitionReport MakePartitionMeshable(Approximation &approximation, cons
         const double share = (100 - detail::kTrialSetupEnd) / (param.maxRounds + 1);
         progress.Step(detail::kTrialSetupEnd + share * round, detail::kTrialSetupEnd + share * (round + 1),
                       (detail::kTrialItems + (round == 0 ? detail::kInputPairsItems : 0)) * faces);
-        const detail::RegionTrial trial = detail::TrialMeshRegions<CoordType>(
-            approximation.Mesh(), input, approximation.CurrentPartition(), approximation.SeedFaces(), param);
+        const detail::RegionTrial trial =
+            detail::TrialMeshRegions<CoordType>(input, approximation.CurrentPartition(), param);
         const std::vector<int> regions = detail::RegionsToSplit(trial, approximation.CurrentPartition());
         const int room = std::min(int(regions.size()), cap - approximation.ProxyCount());
         if (regions.empty() || round == param.maxRounds || room <= 0) {
@@ -405,13 +423,11 @@ MeshablePartitionReport MakePartitionMeshable(Approximation &approximation, cons
             break;
         }
         // Split in region order, so that the new regions' indices do not depend on the ranking's ties.
-        std::vector<int> chosen(regions.begin(), regions.begin() + room), splitFaces;
+        std::vector<int> chosen(regions.begin(), regions.begin() + room);
         std::sort(chosen.begin(), chosen.end());
-        for (int r : chosen) {
-            splitFaces.push_back(trial.splitFace[r]);
-            ++report.splits[int(trial.fault[r])];
-        }
-        approximation.SplitEach(chosen, splitFaces);
+        for (int r : chosen) ++report.splits[int(trial.fault[r])];
+        approximation.SplitEach(chosen, detail::ChooseSplitFaces(input, trial, chosen, approximation.SeedFaces(),
+                                                                 approximation.Mesh()));
         if (param.lloydIterations > 0) approximation.Run(param.lloydIterations);
         ++report.rounds;
     }
