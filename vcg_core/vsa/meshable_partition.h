@@ -119,7 +119,6 @@ struct TrialSetup
         std::string error;
         meshable = BuildSurfaceTopology(in, surfaces[0], error);
         if (!meshable) return;
-        surfaces[1] = surfaces[0];
         const MeshingSurface &s = surfaces[0];
         grid = std::make_unique<SurfaceGrid>(s.positions, s.faces);
         gapTest = std::make_unique<ChordGapTest>(s.positions, s.faces, once.chordGapThreshold, grid.get());
@@ -128,7 +127,7 @@ struct TrialSetup
 
     InputIntersections intersections;
     MeshingParam once;  ///< the meshing's, without repairs
-    std::array<MeshingSurface, 2> surfaces;
+    std::array<MeshingSurface, 2> surfaces;  ///< the second is copied from the first in the second trial
     bool meshable = false;  ///< false: the meshing refuses the input, and says why
     std::unique_ptr<SurfaceGrid> grid;     ///< of the surfaces' faces (the same in both)
     std::unique_ptr<ChordGapTest> gapTest;
@@ -343,6 +342,8 @@ RegionTrial TrialMeshRegions(TrialSetup<CoordType> &input, const Partition &part
     if (!input.meshable) return trial;
     const int slot = 1 - input.latestSurface;
     MeshingSurface &s = input.surfaces[slot];
+    // The second surface starts as a copy of the first, labelled: most of its cells stay.
+    if (s.faces.empty()) s = input.surfaces[1 - slot];
     std::string error;
     if (!AssignRegions(s, partition.faceRegion, regionCount, error)) return trial;
     const std::vector<Proxy> &proxies = input.proxies[slot] = UsableProxies(s, partition.proxies);

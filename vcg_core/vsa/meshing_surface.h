@@ -76,6 +76,9 @@ struct MeshingSurface
     std::vector<int> facePiece;
     std::vector<int> faceCell;               ///< face -> cell
     std::vector<int> cellRegion;             ///< cell -> region
+    /// cell -> lowest face of the component it was cut from (connected faces of one region and
+    /// one piece): cells are numbered in this order, a component's cells in the order grown
+    std::vector<int> cellComponentFace;
     std::vector<int> cellFaceOffset, cellFaces;      ///< faces of cell c: cellFaces[cellFaceOffset[c] .. c+1)
     SharedArray<int> vertexFaceOffset, vertexFaces;  ///< faces around vertex v, same layout
     /// The boundary loop of each cell: its vertices in order, the cell on the left (the
@@ -96,7 +99,6 @@ struct MeshingSurface
     // What was done to the input to make it walkable.
     int ignoredFaces = 0;       ///< faces with a repeated vertex: no area, no edges
     int splitVertices = 0;      ///< extra vertices made by splitting non-manifold vertices per fan
-    int nonDiscRegions = 0;     ///< connected pieces of regions that had to be cut into several cells
 
     int VertexCount() const { return int(positions.size()); }
     int FaceCount() const { return int(faces.size()); }
@@ -185,13 +187,12 @@ public:
     }
 
     /// Cuts `component` (faces of one region, connected through edges, none in a cell yet).
-    /// Returns whether it had to be cut into more than one cell.
-    bool Decompose(const std::vector<int> &component, int region)
+    void Decompose(const std::vector<int> &component, int region)
     {
         const std::vector<int> added = GrowSeveral({component.front()}, component).front();
         if (added.size() == component.size()) {
             Commit(added, region);
-            return false;
+            return;
         }
         Undo(added);
         std::vector<std::vector<int>> pending = {component};
@@ -205,7 +206,6 @@ public:
             for (const std::vector<int> &disc : GrowSeveral(seeds, piece)) Commit(disc, region);
             for (std::vector<int> &rest : UnassignedComponents(piece)) pending.push_back(std::move(rest));
         }
-        return true;
     }
 
     /// Makes `disc` (faces of `region` that form a disc, none in a cell yet) the next cell.
@@ -334,6 +334,46 @@ private:
     }
 };
 
+/// Cuts the components of the faces in no cell (faceCell -1) into disc cells numbered from
+/// CellCount() on, in order of their lowest face. A component that
+/// was cell `before` of `previousCell` (per face, or empty) and `previousOffset` whole is a
+/// disc, and stays one cell without being grown again.
+inline void CutFreeFaces(MeshingSurface &s, const std::vector<int> &previousCell,
+                         const std::vector<int> &previousOffset)
+{
+    const int faceCount = s.FaceCount();
+    // Each per-face array is fresh memory, hundreds of megabytes at millions of faces: the
+    // ticks keep the progress bar moving between them.
+    ProgressTick(faceCount);
+    DiscGrower grower(s);
+    std::vector<char> seen(faceCount, 0);
+    ProgressTick(faceCount);
+    ProgressCounter progress;
+    for (int start = 0; start < faceCount; ++start) {
+        if (seen[start] || s.faceCell[start] != -1) continue;
+        const int region = s.faceRegion[start], piece = s.PieceOf(start);
+        const int before = previousCell.empty() ? -1 : previousCell[start];
+        std::vector<int> component = {start};
+        seen[start] = 1;
+        bool inOneCell = before >= 0;
+        for (size_t head = 0; head < component.size(); ++head)
+            for (int g : s.neighbors[component[head]])
+                if (g >= 0 && !seen[g] && s.faceRegion[g] == region && s.PieceOf(g) == piece) {
+                    seen[g] = 1;
+                    component.push_back(g);
+                    inOneCell = inOneCell && previousCell[g] == before;
+                }
+        progress.Count(int(component.size()));
+        if (inOneCell && int(component.size()) == previousOffset[before + 1] - previousOffset[before]) {
+            grower.Commit(component, region);
+        } else {
+            std::sort(component.begin(), component.end());
+            grower.Decompose(component, region);
+        }
+        s.cellComponentFace.resize(s.CellCount(), start);
+    }
+}
+
 /// Cuts every region into disc cells: components of a region's piece (faces of one region and
 /// one piece, connected through edges) in order of their lowest face. When `s` has cells
 /// already (rebuilding after HalveCells), a component that is one of them, whole, is a disc
@@ -343,86 +383,80 @@ inline void BuildCells(MeshingSurface &s)
     const int faceCount = s.FaceCount();
     std::vector<int> previousCell;
     if (s.faceCell.size() == size_t(faceCount)) previousCell.swap(s.faceCell);
-    else previousCell.assign(faceCount, -1);
     const std::vector<int> previousOffset = std::move(s.cellFaceOffset);
     s.faceCell.assign(faceCount, -1);
     s.cellRegion.clear();
-    s.nonDiscRegions = 0;
-    // Each per-face array is fresh memory, hundreds of megabytes at millions of faces: the
-    // ticks keep the progress bar moving between them.
-    ProgressTick(faceCount);
-    DiscGrower grower(s);
-    std::vector<char> seen(faceCount, 0);
-    ProgressTick(faceCount);
-    ProgressCounter progress;
-    for (int start = 0; start < faceCount; ++start) {
-        if (seen[start]) continue;
-        const int region = s.faceRegion[start], piece = s.PieceOf(start), before = previousCell[start];
-        std::vector<int> component = {start};
-        seen[start] = 1;
-        bool inOneCell = before >= 0;
-        for (size_t head = 0; head < component.size(); ++head)
-            for (int g : s.neighbors[component[head]])
-                if (g >= 0 && !seen[g] && s.faceRegion[g] == region && s.PieceOf(g) == piece) {
-                    seen[g] = 1;
-                    component.push_back(g);
-                    inOneCell &= previousCell[g] == before;
-                }
-        progress.Count(int(component.size()));
-        if (inOneCell && int(component.size()) == previousOffset[before + 1] - previousOffset[before]) {
-            grower.Commit(component, region);
-            continue;
-        }
-        std::sort(component.begin(), component.end());
-        s.nonDiscRegions += grower.Decompose(component, region);
-    }
+    s.cellComponentFace.clear();
+    CutFreeFaces(s, previousCell, previousOffset);
     BuildOffsets(s.faceCell, s.CellCount(), s.cellFaceOffset, s.cellFaces);
 }
 
-/// Fills the cells' area vectors, areas and centroids (see MeshingSurface), cell by cell on
-/// every core: each cell sums its own faces in order, so the bits do not depend on the threads.
+/// The faces of `cells` in all.
+inline size_t CellFaceTotal(const MeshingSurface &s, const std::vector<int> &cells)
+{
+    size_t total = 0;
+    for (int c : cells) total += size_t(s.CellFaceCount(c));
+    return total;
+}
+
+/// Fills the area vector, area and centroid of cell c (see MeshingSurface), summing its faces
+/// in order.
+inline void MeasureCell(MeshingSurface &s, int c)
+{
+    Point3d areaVector(0, 0, 0), centroid(0, 0, 0);
+    double doubleArea = 0;
+    for (int k = s.cellFaceOffset[c]; k < s.cellFaceOffset[c + 1]; ++k) {
+        const int f = s.cellFaces[k];
+        const auto &t = s.faces[f];
+        const Point3d n = s.DoubleAreaVector(f);
+        const double norm = n.Norm();
+        areaVector += n;
+        doubleArea += norm;
+        centroid += (s.positions[t[0]] + s.positions[t[1]] + s.positions[t[2]]) * (norm / 3);
+    }
+    // Sums in locals, stored once: neighbouring cells' entries share cache lines across threads.
+    s.cellAreaVector[c] = areaVector;
+    s.cellDoubleArea[c] = doubleArea;
+    s.cellCentroid[c] = centroid / (doubleArea > 0 ? doubleArea : 1.0);
+}
+
+/// Fills the cells' area vectors, areas and centroids, cell by cell on every core: each cell
+/// sums its own faces in order, so the bits do not depend on the threads.
 inline void MeasureCells(MeshingSurface &s)
 {
     s.cellAreaVector.assign(s.CellCount(), Point3d(0, 0, 0));
     s.cellDoubleArea.assign(s.CellCount(), 0);
     s.cellCentroid.assign(s.CellCount(), Point3d(0, 0, 0));
     const auto facesOf = [&s](int c) { return s.CellFaceCount(c); };
-    // Sums in locals, stored once: neighbouring cells' entries share cache lines across threads.
-    ForEachGroup(s.CellCount(), size_t(s.FaceCount()), facesOf, [&s](int c) {
-        Point3d areaVector(0, 0, 0), centroid(0, 0, 0);
-        double doubleArea = 0;
-        for (int k = s.cellFaceOffset[c]; k < s.cellFaceOffset[c + 1]; ++k) {
-            const int f = s.cellFaces[k];
-            const auto &t = s.faces[f];
-            const Point3d n = s.DoubleAreaVector(f);
-            const double norm = n.Norm();
-            areaVector += n;
-            doubleArea += norm;
-            centroid += (s.positions[t[0]] + s.positions[t[1]] + s.positions[t[2]]) * (norm / 3);
+    ForEachGroup(s.CellCount(), size_t(s.FaceCount()), facesOf, [&s](int c) { MeasureCell(s, c); });
+}
+
+/// Whether vertex v is on three boundary edges or more (between cells, or on the border).
+inline bool IsJunction(const MeshingSurface &s, int v)
+{
+    int halfEdges = 0;  // boundary edges at v, one per face beside them: border edges count twice
+    for (int k = s.vertexFaceOffset[v]; k < s.vertexFaceOffset[v + 1]; ++k) {
+        const int f = s.vertexFaces[k];
+        for (int i = 0; i < 3; ++i) {
+            if (s.faces[f][i] != v && s.faces[f][(i + 1) % 3] != v) continue;
+            const int g = s.neighbors[f][i];
+            if (g < 0) halfEdges += 2;
+            else if (s.faceCell[g] != s.faceCell[f]) ++halfEdges;
         }
-        s.cellAreaVector[c] = areaVector;
-        s.cellDoubleArea[c] = doubleArea;
-        s.cellCentroid[c] = centroid / (doubleArea > 0 ? doubleArea : 1.0);
-    });
+    }
+    return halfEdges >= 6;
 }
 
 /// Fills onBorder and junction (see MeshingSurface).
 inline void MarkBoundaryVertices(MeshingSurface &s)
 {
-    std::vector<int> boundaryHalfEdges(s.VertexCount(), 0);  // border edges count twice
     s.onBorder.assign(s.VertexCount(), 0);
     ProgressCounter progress;
     for (int f = 0; f < s.FaceCount(); ++f, progress.Count())
-        for (int i = 0; i < 3; ++i) {
-            const int g = s.neighbors[f][i], a = s.faces[f][i], b = s.faces[f][(i + 1) % 3];
-            if (g >= 0 && s.faceCell[g] == s.faceCell[f]) continue;
-            const int weight = g < 0 ? 2 : 1;
-            boundaryHalfEdges[a] += weight;
-            boundaryHalfEdges[b] += weight;
-            if (g < 0) s.onBorder[a] = s.onBorder[b] = 1;
-        }
+        for (int i = 0; i < 3; ++i)
+            if (s.neighbors[f][i] < 0) s.onBorder[s.faces[f][i]] = s.onBorder[s.faces[f][(i + 1) % 3]] = 1;
     s.junction.resize(s.VertexCount());
-    for (int v = 0; v < s.VertexCount(); ++v) s.junction[v] = boundaryHalfEdges[v] >= 6;  // three edges or more
+    for (int v = 0; v < s.VertexCount(); ++v, progress.Count()) s.junction[v] = IsJunction(s, v);
 }
 
 inline bool IsCellBoundary(const MeshingSurface &s, int f, int i)
@@ -480,22 +514,30 @@ inline std::string TraceCellLoop(MeshingSurface &s, int c)
     return {};
 }
 
-/// Traces every cell's boundary loop (TraceCellLoop), cell by cell on every core; false with
+/// Traces the boundary loops of `cells` (TraceCellLoop), cell by cell on every core; false with
 /// the first cell's reason in `error` if one is not a simple loop.
-inline bool TraceCellLoops(MeshingSurface &s, std::string &error)
+inline bool TraceCellLoops(MeshingSurface &s, const std::vector<int> &cells, std::string &error)
 {
-    const int cellCount = s.CellCount();
-    s.cellLoop.assign(cellCount, {});
-    s.cellLoopOther.assign(cellCount, {});
-    std::vector<std::string> errors(cellCount);
-    const auto facesOf = [&s](int c) { return s.CellFaceCount(c); };
-    ForEachGroup(cellCount, size_t(s.FaceCount()), facesOf, [&](int c) { errors[c] = TraceCellLoop(s, c); });
+    std::vector<std::string> errors(cells.size());
+    const auto facesOf = [&](int k) { return s.CellFaceCount(cells[k]); };
+    ForEachGroup(int(cells.size()), CellFaceTotal(s, cells), facesOf,
+                 [&](int k) { errors[k] = TraceCellLoop(s, cells[k]); });
     for (const std::string &e : errors)
         if (!e.empty()) {
             error = e;
             return false;
         }
     return true;
+}
+
+/// TraceCellLoops for every cell.
+inline bool TraceCellLoops(MeshingSurface &s, std::string &error)
+{
+    s.cellLoop.assign(s.CellCount(), {});
+    s.cellLoopOther.assign(s.CellCount(), {});
+    std::vector<int> cells(s.CellCount());
+    std::iota(cells.begin(), cells.end(), 0);
+    return TraceCellLoops(s, cells, error);
 }
 
 /// Cuts the regions of `s` into cells along their pieces (s.facePiece), and traces the cells.
@@ -505,6 +547,98 @@ inline bool BuildCellsAndLoops(MeshingSurface &s, std::string &error)
     MeasureCells(s);
     MarkBoundaryVertices(s);
     return TraceCellLoops(s, error);
+}
+
+/// Numbers the cells of `s` in order of their component's lowest face, a component's cells in
+/// the order they were grown (the order BuildCells gives), leaving out those that `live` does
+/// not mark. Returns the new index of each old cell, -1 for those left out; faceCell and
+/// cellFaces are left to the caller.
+inline std::vector<int> RenumberCells(MeshingSurface &s, const std::vector<char> &live)
+{
+    std::vector<int> order;
+    for (int c = 0; c < s.CellCount(); ++c)
+        if (live[c]) order.push_back(c);
+    std::sort(order.begin(), order.end(), [&s](int a, int b) {
+        return s.cellComponentFace[a] != s.cellComponentFace[b] ? s.cellComponentFace[a] < s.cellComponentFace[b]
+                                                                : a < b;
+    });
+    std::vector<int> newIndex(s.CellCount(), -1), region(order.size()), componentFace(order.size());
+    for (size_t n = 0; n < order.size(); ++n) {
+        newIndex[order[n]] = int(n);
+        region[n] = s.cellRegion[order[n]];
+        componentFace[n] = s.cellComponentFace[order[n]];
+    }
+    s.cellRegion.swap(region);
+    s.cellComponentFace.swap(componentFace);
+    return newIndex;
+}
+
+/// BuildCellsAndLoops for a surface whose cells were built before (one piece per region) and
+/// whose faces then changed regions from `previousRegion` to s.faceRegion: the cells of the
+/// regions that neither lost nor gained a face keep their faces, measures and loops, only
+/// renumbered; the other regions are cut again. The same surface, bit for bit, at the cost of
+/// the regions that changed (a round of the meshable partition splits a few).
+inline bool RebuildChangedCells(MeshingSurface &s, const std::vector<int> &previousRegion, int previousRegionCount,
+                                std::string &error)
+{
+    const int faceCount = s.FaceCount(), previousCells = s.CellCount();
+    std::vector<char> changed(std::max(previousRegionCount, s.regionCount), 0);
+    for (int f = 0; f < faceCount; ++f)
+        if (previousRegion[f] != s.faceRegion[f]) changed[previousRegion[f]] = changed[s.faceRegion[f]] = 1;
+    // A face is in a changed region before iff after: it either kept its region or changed it.
+    for (int f = 0; f < faceCount; ++f)
+        if (changed[s.faceRegion[f]]) s.faceCell[f] = -1;
+    CutFreeFaces(s, {}, {});
+    std::vector<char> live(s.CellCount(), 1);
+    for (int c = 0; c < previousCells; ++c) live[c] = !changed[s.cellRegion[c]];
+    const std::vector<int> newIndex = RenumberCells(s, live);
+    for (int &c : s.faceCell) c = newIndex[c];
+
+    const std::vector<int> previousOffset = std::move(s.cellFaceOffset);
+    BuildOffsets(s.faceCell, s.CellCount(), s.cellFaceOffset, s.cellFaces);
+    const std::vector<Point3d> areaVector = std::move(s.cellAreaVector), centroid = std::move(s.cellCentroid);
+    const std::vector<double> doubleArea = std::move(s.cellDoubleArea);
+    std::vector<std::vector<int>> loop = std::move(s.cellLoop), other = std::move(s.cellLoopOther);
+    s.cellAreaVector.assign(s.CellCount(), Point3d(0, 0, 0));
+    s.cellDoubleArea.assign(s.CellCount(), 0);
+    s.cellCentroid.assign(s.CellCount(), Point3d(0, 0, 0));
+    s.cellLoop.assign(s.CellCount(), {});
+    s.cellLoopOther.assign(s.CellCount(), {});
+    // Kept cells keep their measures and loops; a loop is traced again where it runs along a
+    // changed region, whose cells across it are new.
+    std::vector<int> traced;
+    std::vector<char> measured(s.CellCount(), 0);
+    for (int c = 0; c < previousCells; ++c) {
+        const int n = newIndex[c];
+        if (n < 0) continue;
+        s.cellAreaVector[n] = areaVector[c];
+        s.cellDoubleArea[n] = doubleArea[c];
+        s.cellCentroid[n] = centroid[c];
+        measured[n] = 1;
+        bool alongChanged = false;
+        for (int &o : other[c]) {
+            if (o >= 0 && newIndex[o] < 0) alongChanged = true;
+            if (o >= 0) o = newIndex[o];
+        }
+        if (alongChanged) {
+            traced.push_back(n);
+        } else {
+            s.cellLoop[n] = std::move(loop[c]);
+            s.cellLoopOther[n] = std::move(other[c]);
+        }
+    }
+    std::vector<int> fresh;
+    for (int n = 0; n < s.CellCount(); ++n)
+        if (!measured[n]) fresh.push_back(n);
+    const auto facesOf = [&s, &fresh](int k) { return s.CellFaceCount(fresh[k]); };
+    ForEachGroup(int(fresh.size()), CellFaceTotal(s, fresh), facesOf, [&](int k) { MeasureCell(s, fresh[k]); });
+    // Junctions change only at the vertices of changed regions' faces.
+    for (int f = 0; f < faceCount; ++f)
+        if (changed[s.faceRegion[f]])
+            for (int v : s.faces[f]) s.junction[v] = IsJunction(s, v);
+    traced.insert(traced.end(), fresh.begin(), fresh.end());
+    std::sort(traced.begin(), traced.end());
+    return TraceCellLoops(s, traced, error);
 }
 
 }  // namespace detail
@@ -596,17 +730,24 @@ inline bool BuildSurfaceTopology(const IndexedMesh &im, MeshingSurface &s, std::
 
 /// Labels the faces of a surface from BuildSurfaceTopology with their regions (`faceRegion` per
 /// IndexedMesh face) and cuts the regions into disc cells; false with the reason in `error` if
-/// the cells do not trace. A surface labelled before keeps, as they were, the cells that are
-/// still whole regions (see BuildCells): the trials of the meshable partition relabel one
-/// surface round after round, and most regions do not change.
+/// the cells do not trace. A surface labelled before keeps, as they were, the cells of the
+/// regions whose faces did not change (see RebuildChangedCells): the trials of the meshable
+/// partition relabel one surface round after round, and most regions do not change.
 inline bool AssignRegions(MeshingSurface &s, const std::vector<int> &faceRegion, int regionCount, std::string &error)
 {
+    const bool relabel = s.faceCell.size() == size_t(s.FaceCount()) && s.facePiece.empty();
+    const int previousRegionCount = s.regionCount;
+    std::vector<int> previousRegion;
+    if (relabel) previousRegion.swap(s.faceRegion);
     s.regionCount = regionCount;
     s.faceRegion.resize(s.FaceCount());
     ProgressCounter progress;
     for (int f = 0; f < s.FaceCount(); ++f, progress.Count()) s.faceRegion[f] = faceRegion[s.sourceFace[f]];
     std::vector<int>().swap(s.facePiece);  // one piece per region, and no memory for it
-    return detail::BuildCellsAndLoops(s, error);
+    const bool built = relabel ? detail::RebuildChangedCells(s, previousRegion, previousRegionCount, error)
+                               : detail::BuildCellsAndLoops(s, error);
+    if (!built) s.faceCell.clear();  // half-built cells: the next labels start afresh
+    return built;
 }
 
 /// Builds the surface the meshing stage walks (BuildSurfaceTopology, then AssignRegions), or
