@@ -26,6 +26,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <memory>
 #include <set>
 #include <string>
 #include <utility>
@@ -211,15 +212,17 @@ int main(int argc, char **argv)
         const double peakRssPartitionMb = vsa_bench::PeakRssMb();
         clock.Restart();
         progressGaps.Start("meshable");
+        std::shared_ptr<MeshingSurface> surface;
         const MeshablePartitionReport meshable =
-            MakePartitionMeshable<BMesh::CoordType>(approximation, o.meshing, o.meshable, &NoteProgress);
+            MakePartitionMeshable<BMesh::CoordType>(approximation, o.meshing, o.meshable, &NoteProgress, &surface);
         const double peakRssMeshableMb = vsa_bench::PeakRssMb();
         const double tMeshable = clock.Seconds();
         progressGaps.Start("meshing");
         const ApproximationResult partition = approximation.Result();
         BMesh output;
         const MeshingReport meshing =
-            BuildApproximatingMesh(approximation.Mesh(), partition.partition, o.meshing, output, &NoteProgress);
+            BuildApproximatingMesh(approximation.Mesh(), partition.partition, o.meshing, output, &NoteProgress,
+                                   std::move(surface));
         const double tMesh = clock.Seconds();
         progressGaps.Start("measuring");
         // Before the measuring below allocates its own copies and samples.

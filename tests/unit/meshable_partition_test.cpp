@@ -199,6 +199,38 @@ TEST(MeshablePartition, TrialsInTurnJudgeAsTrialsAfresh)
     EXPECT_GT(kept, 0);
 }
 
+/// The meshing starts from the last trial's surface, which must be labelled with the final
+/// partition and give the output a surface built afresh gives; a surface labelled otherwise is
+/// not used.
+TEST(MeshablePartition, MeshingFromTheLastTrialsSurfaceIsTheSame)
+{
+    const std::unique_ptr<Approximation> box = PartitionedBoxWithHole(4);
+    Approximation &approximation = *box;
+    const MeshingParam meshing;
+    std::shared_ptr<MeshingSurface> surface;
+    const MeshablePartitionReport report = MakePartitionMeshable<vcg::Point3f>(
+        approximation, meshing, MeshablePartitionParam(), nullptr, &surface);
+    ASSERT_GT(report.proxiesFinal, report.proxiesRequested);  // the box's rings were split
+    ASSERT_TRUE(surface);
+    const Partition &partition = approximation.CurrentPartition();
+    const int regionCount = int(partition.proxies.size());
+    EXPECT_TRUE(IsLabelledAs(*surface, partition.faceRegion, regionCount));
+    auto mislabelled = std::make_shared<MeshingSurface>(*surface);
+    mislabelled->faceRegion.back() = (mislabelled->faceRegion.back() + 1) % regionCount;
+    EXPECT_FALSE(IsLabelledAs(*mislabelled, partition.faceRegion, regionCount));
+
+    TMesh fresh, reused, notUsed;
+    ASSERT_TRUE(BuildApproximatingMesh(approximation.Mesh(), partition, meshing, fresh).ok);
+    ASSERT_TRUE(BuildApproximatingMesh(approximation.Mesh(), partition, meshing, reused, nullptr, surface).ok);
+    ASSERT_TRUE(BuildApproximatingMesh(approximation.Mesh(), partition, meshing, notUsed, nullptr, mislabelled).ok);
+    const IndexedMesh expected = BuildIndexedMesh(fresh);
+    for (const TMesh *out : {&reused, &notUsed}) {
+        const IndexedMesh got = BuildIndexedMesh(*out);
+        EXPECT_EQ(got.positions, expected.positions);
+        EXPECT_EQ(got.faces, expected.faces);
+    }
+}
+
 /// An unwelded mesh (every face its own vertices, as STL files have them) is refused with the
 /// hint to weld it first.
 TEST(MeshablePartition, TriangleSoupIsRefusedWithTheWeldHint)

@@ -399,10 +399,15 @@ inline std::vector<int> RegionsToSplit(const RegionTrial &trial, const Partition
 /// detail::TrialMeshRegions), each at its input face farthest from its triangulation, with
 /// Lloyd iterations confined to it (Approximation::Split), and tests again, until every
 /// region passes, k' reaches its cap, or the rounds run out.
+///
+/// `surface`, if given, receives the last trial's meshing surface, labelled with the final
+/// partition, for BuildApproximatingMesh to start from (null when there was no trial).
 template <class CoordType>
 MeshablePartitionReport MakePartitionMeshable(Approximation &approximation, const MeshingParam &meshing,
-                                              const MeshablePartitionParam &param, vcg::CallBackPos *cb = nullptr)
+                                              const MeshablePartitionParam &param, vcg::CallBackPos *cb = nullptr,
+                                              std::shared_ptr<MeshingSurface> *surface = nullptr)
 {
+    if (surface) surface->reset();
     MeshablePartitionReport report;
     report.proxiesRequested = report.proxiesFinal = approximation.ProxyCount();
     if (!param.enabled) return report;
@@ -433,6 +438,8 @@ MeshablePartitionReport MakePartitionMeshable(Approximation &approximation, cons
         ++report.rounds;
     }
     report.proxiesFinal = approximation.ProxyCount();
+    if (surface && input.latest)
+        *surface = std::make_shared<MeshingSurface>(std::move(input.surfaces[input.latestSurface]));
     progress.Done();
     return report;
 }

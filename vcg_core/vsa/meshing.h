@@ -288,9 +288,14 @@ void WriteOutputMesh(const MeshingPass &pass, bool polygonal, OutMeshType &out)
 /// are not discs are cut into discs). Accepted input: see BuildMeshingSurface; anything else
 /// returns a report with ok == false and the reason, and leaves `out` empty.
 /// OutMeshType needs per-face flags when param.polygonal is set.
+///
+/// `labelled`, if given, is the surface BuildMeshingSurface would build from `in` and
+/// `partition` (MakePartitionMeshable's): the meshing starts from it instead. One labelled
+/// otherwise (IsLabelledAs) is not used.
 template <class OutMeshType>
 MeshingReport BuildApproximatingMesh(const IndexedMesh &in, const Partition &partition, const MeshingParam &param,
-                                     OutMeshType &out, vcg::CallBackPos *cb = nullptr)
+                                     OutMeshType &out, vcg::CallBackPos *cb = nullptr,
+                                     std::shared_ptr<MeshingSurface> labelled = nullptr)
 {
     RequireTriangularMesh(out);
     if (param.polygonal) RequirePerFaceFlags(out);
@@ -302,8 +307,11 @@ MeshingReport BuildApproximatingMesh(const IndexedMesh &in, const Partition &par
     ProgressStage progress(cb, "VSA meshing: cutting regions into discs");
     progress.Step(0, 20, detail::kMeshingSetupItems * in.FaceCount());
     const int regionCount = int(partition.proxies.size());
-    auto surface = std::make_shared<MeshingSurface>();
-    if (!BuildMeshingSurface(in, partition.faceRegion, regionCount, *surface, report.error)) return report;
+    std::shared_ptr<MeshingSurface> surface = std::move(labelled);
+    if (!surface || !IsLabelledAs(*surface, partition.faceRegion, regionCount)) {
+        surface = std::make_shared<MeshingSurface>();
+        if (!BuildMeshingSurface(in, partition.faceRegion, regionCount, *surface, report.error)) return report;
+    }
     report.ignoredFaces = surface->ignoredFaces;
     report.splitVertices = surface->splitVertices;
     std::vector<int> regionCells(regionCount, 0);  // before any halving (see regionsCut)

@@ -750,6 +750,18 @@ inline bool AssignRegions(MeshingSurface &s, const std::vector<int> &faceRegion,
     return built;
 }
 
+/// Whether `s` has cells and labels its faces as `faceRegion` (per IndexedMesh face) does, with
+/// one piece per region: what BuildMeshingSurface gives for these labels.
+inline bool IsLabelledAs(const MeshingSurface &s, const std::vector<int> &faceRegion, int regionCount)
+{
+    if (s.regionCount != regionCount || !s.facePiece.empty() || s.faceCell.size() != size_t(s.FaceCount()) ||
+        s.faceRegion.size() != size_t(s.FaceCount()))
+        return false;
+    for (int f = 0; f < s.FaceCount(); ++f)
+        if (s.sourceFace[f] >= int(faceRegion.size()) || s.faceRegion[f] != faceRegion[s.sourceFace[f]]) return false;
+    return true;
+}
+
 /// Builds the surface the meshing stage walks (BuildSurfaceTopology, then AssignRegions), or
 /// returns false with the reason in `error`.
 inline bool BuildMeshingSurface(const IndexedMesh &im, const std::vector<int> &faceRegion, int regionCount,
