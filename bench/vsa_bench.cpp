@@ -212,9 +212,9 @@ int main(int argc, char **argv)
         const double peakRssPartitionMb = vsa_bench::PeakRssMb();
         clock.Restart();
         progressGaps.Start("meshable");
-        std::shared_ptr<MeshingSurface> surface;
+        MeshingStart start;
         const MeshablePartitionReport meshable =
-            MakePartitionMeshable<BMesh::CoordType>(approximation, o.meshing, o.meshable, &NoteProgress, &surface);
+            MakePartitionMeshable<BMesh::CoordType>(approximation, o.meshing, o.meshable, &NoteProgress, &start);
         const double peakRssMeshableMb = vsa_bench::PeakRssMb();
         const double tMeshable = clock.Seconds();
         progressGaps.Start("meshing");
@@ -222,7 +222,7 @@ int main(int argc, char **argv)
         BMesh output;
         const MeshingReport meshing =
             BuildApproximatingMesh(approximation.Mesh(), partition.partition, o.meshing, output, &NoteProgress,
-                                   std::move(surface));
+                                   std::move(start));
         const double tMesh = clock.Seconds();
         progressGaps.Start("measuring");
         // Before the measuring below allocates its own copies and samples.

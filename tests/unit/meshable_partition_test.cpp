@@ -199,32 +199,37 @@ TEST(MeshablePartition, TrialsInTurnJudgeAsTrialsAfresh)
     EXPECT_GT(kept, 0);
 }
 
-/// The meshing starts from the last trial's surface, which must be labelled with the final
-/// partition and give the output a surface built afresh gives; a surface labelled otherwise is
-/// not used.
-TEST(MeshablePartition, MeshingFromTheLastTrialsSurfaceIsTheSame)
+/// The meshing starts from the last trial's surface and floodings, which must be labelled with
+/// the final partition and give the output a surface built afresh gives; a surface labelled
+/// otherwise is not used, nor floodings of another surface.
+TEST(MeshablePartition, MeshingFromTheLastTrialIsTheSame)
 {
     const std::unique_ptr<Approximation> box = PartitionedBoxWithHole(4);
     Approximation &approximation = *box;
     const MeshingParam meshing;
-    std::shared_ptr<MeshingSurface> surface;
-    const MeshablePartitionReport report = MakePartitionMeshable<vcg::Point3f>(
-        approximation, meshing, MeshablePartitionParam(), nullptr, &surface);
+    MeshingStart start;
+    const MeshablePartitionReport report =
+        MakePartitionMeshable<vcg::Point3f>(approximation, meshing, MeshablePartitionParam(), nullptr, &start);
     ASSERT_GT(report.proxiesFinal, report.proxiesRequested);  // the box's rings were split
-    ASSERT_TRUE(surface);
+    ASSERT_TRUE(start.surface);
+    ASSERT_TRUE(start.flooding);
+    EXPECT_EQ(&start.flooding->Surface(), start.surface.get());
     const Partition &partition = approximation.CurrentPartition();
     const int regionCount = int(partition.proxies.size());
-    EXPECT_TRUE(IsLabelledAs(*surface, partition.faceRegion, regionCount));
-    auto mislabelled = std::make_shared<MeshingSurface>(*surface);
-    mislabelled->faceRegion.back() = (mislabelled->faceRegion.back() + 1) % regionCount;
-    EXPECT_FALSE(IsLabelledAs(*mislabelled, partition.faceRegion, regionCount));
+    EXPECT_TRUE(IsLabelledAs(*start.surface, partition.faceRegion, regionCount));
+    MeshingStart mislabelled{std::make_shared<MeshingSurface>(*start.surface), start.flooding};
+    mislabelled.surface->faceRegion.back() = (mislabelled.surface->faceRegion.back() + 1) % regionCount;
+    EXPECT_FALSE(IsLabelledAs(*mislabelled.surface, partition.faceRegion, regionCount));
+    MeshingStart otherSurface{std::make_shared<MeshingSurface>(*start.surface), start.flooding};
 
-    TMesh fresh, reused, notUsed;
-    ASSERT_TRUE(BuildApproximatingMesh(approximation.Mesh(), partition, meshing, fresh).ok);
-    ASSERT_TRUE(BuildApproximatingMesh(approximation.Mesh(), partition, meshing, reused, nullptr, surface).ok);
-    ASSERT_TRUE(BuildApproximatingMesh(approximation.Mesh(), partition, meshing, notUsed, nullptr, mislabelled).ok);
+    TMesh fresh, started, notUsed, notFlooded;
+    const IndexedMesh &mesh = approximation.Mesh();
+    ASSERT_TRUE(BuildApproximatingMesh(mesh, partition, meshing, fresh).ok);
+    ASSERT_TRUE(BuildApproximatingMesh(mesh, partition, meshing, started, nullptr, std::move(start)).ok);
+    ASSERT_TRUE(BuildApproximatingMesh(mesh, partition, meshing, notUsed, nullptr, std::move(mislabelled)).ok);
+    ASSERT_TRUE(BuildApproximatingMesh(mesh, partition, meshing, notFlooded, nullptr, std::move(otherSurface)).ok);
     const IndexedMesh expected = BuildIndexedMesh(fresh);
-    for (const TMesh *out : {&reused, &notUsed}) {
+    for (const TMesh *out : {&started, &notUsed, &notFlooded}) {
         const IndexedMesh got = BuildIndexedMesh(*out);
         EXPECT_EQ(got.positions, expected.positions);
         EXPECT_EQ(got.faces, expected.faces);

@@ -254,15 +254,15 @@ ShapeApproximationResult ApproximateShape(const InMeshType &in, OutMeshType &out
         result.secondsIterations = detail::SecondsSince(start);
         const ApproximationResult asked = approximation.Result();
         start = std::chrono::steady_clock::now();
-        std::shared_ptr<MeshingSurface> surface;
+        MeshingStart meshingStart;
         result.meshable = MakePartitionMeshable<typename OutMeshType::CoordType>(
-            approximation, param.meshing, param.meshable, detail::ProgressSlice::Enter(cb, 70, 80), &surface);
+            approximation, param.meshing, param.meshable, detail::ProgressSlice::Enter(cb, 70, 80), &meshingStart);
         result.secondsMeshable = detail::SecondsSince(start);
         result.partition = approximation.Result();
 
         start = std::chrono::steady_clock::now();
         result.meshing = BuildApproximatingMesh(mesh, result.partition.partition, param.meshing, out,
-                                                detail::ProgressSlice::Enter(cb, 80, 100), std::move(surface));
+                                                detail::ProgressSlice::Enter(cb, 80, 100), std::move(meshingStart));
         if (result.meshable.proxiesFinal > result.meshable.proxiesRequested)
             detail::KeepBetterOfAsked(mesh, asked, param.meshing, result, out);
         result.secondsMeshing = detail::SecondsSince(start);

@@ -78,18 +78,19 @@ public:
         FindInteriors();
     }
 
-    /// For `s` cut into other cells than the surface of `earlier` (halved or carved, see
-    /// HalveCells: the same vertices and faces): shares its edges, and every cell of `s` that
-    /// was a cell there, with the same loop, keeps its flooding to update, as a later pass on
-    /// the same cells would. Halving rounds leave most cells as they were, and flooding them
-    /// anew would cost each round as much as the first pass.
-    CellFlooding(const MeshingSurface &s, const CellFlooding &earlier)
+    /// For `s` cut into other cells than the surface of `earlier` (halved, carved or relabelled,
+    /// see HalveCells and AssignRegions: the same vertices and faces), or for that surface
+    /// itself: shares its edges, and every cell of `s` that was a cell there, with the same loop,
+    /// keeps its flooding to update, as a later pass on the same cells would. Halving rounds and
+    /// the meshable partition's trials leave most cells as they were, and flooding them anew
+    /// would cost each as much as the first pass. `earlier` is taken: copy it to keep it.
+    CellFlooding(const MeshingSurface &s, CellFlooding earlier)
         : s_(s),
-          edges_(earlier.edges_),
-          color_(earlier.color_),
-          distance_(earlier.distance_),
-          parent_(earlier.parent_),
-          root_(earlier.root_),
+          edges_(std::move(earlier.edges_)),
+          color_(std::move(earlier.color_)),
+          distance_(std::move(earlier.distance_)),
+          parent_(std::move(earlier.parent_)),
+          root_(std::move(earlier.root_)),
           changed_(s.positions.size(), 0),
           loopColor_(s.CellCount()),
           loopDistance_(s.CellCount())
@@ -103,10 +104,13 @@ public:
                         before.cellLoop[was] == s.cellLoop[c];
             for (int k = first; k < last && same; ++k) same = before.faceCell[s.cellFaces[k]] == was;
             if (!same) continue;
-            loopColor_[c] = earlier.loopColor_[was];
-            loopDistance_[c] = earlier.loopDistance_[was];
+            loopColor_[c] = std::move(earlier.loopColor_[was]);
+            loopDistance_[c] = std::move(earlier.loopDistance_[was]);
         }
     }
+
+    /// The surface whose cells these floodings are.
+    const MeshingSurface &Surface() const { return s_; }
 
     /// Anchor triples of the three-coloured faces of cell c, each sorted, in increasing order
     /// without repeats: looked up by binary search.

@@ -15,6 +15,7 @@
 #include <cmath>
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <utility>
@@ -117,9 +118,10 @@ struct TrialSetup
     {
         once.repairRounds = once.halvingRounds = 0;
         std::string error;
-        meshable = BuildSurfaceTopology(in, surfaces[0], error);
+        surfaces[0] = std::make_shared<MeshingSurface>();
+        meshable = BuildSurfaceTopology(in, *surfaces[0], error);
         if (!meshable) return;
-        const MeshingSurface &s = surfaces[0];
+        const MeshingSurface &s = *surfaces[0];
         grid = std::make_unique<SurfaceGrid>(s.positions, s.faces);
         gapTest = std::make_unique<ChordGapTest>(s.positions, s.faces, once.chordGapThreshold, grid.get());
     }
@@ -127,7 +129,9 @@ struct TrialSetup
 
     InputIntersections intersections;
     MeshingParam once;  ///< the meshing's, without repairs
-    std::array<MeshingSurface, 2> surfaces;  ///< the second is copied from the first in the second trial
+    /// The second is copied from the first in the second trial. Shared, so that the last one
+    /// can be handed to the meshing with the floodings that refer to it (see MeshingStart).
+    std::array<std::shared_ptr<MeshingSurface>, 2> surfaces;
     bool meshable = false;  ///< false: the meshing refuses the input, and says why
     std::unique_ptr<SurfaceGrid> grid;     ///< of the surfaces' faces (the same in both)
     std::unique_ptr<ChordGapTest> gapTest;
@@ -278,7 +282,7 @@ template <class CoordType>
 std::vector<int> ChooseSplitFaces(const TrialSetup<CoordType> &input, const RegionTrial &trial,
                                   const std::vector<int> &regions, const std::vector<int> &seeds, const IndexedMesh &in)
 {
-    const MeshingSurface &s = input.surfaces[input.latestSurface];
+    const MeshingSurface &s = *input.surfaces[input.latestSurface];
     const MeshingPass &pass = input.latest->Best().pass;
     const int regionCount = int(trial.fault.size());
     std::vector<char> chosen(regionCount, 0);
@@ -341,9 +345,9 @@ RegionTrial TrialMeshRegions(TrialSetup<CoordType> &input, const Partition &part
     trial.facingAway.assign(regionCount, 0);
     if (!input.meshable) return trial;
     const int slot = 1 - input.latestSurface;
-    MeshingSurface &s = input.surfaces[slot];
     // The second surface starts as a copy of the first, labelled: most of its cells stay.
-    if (s.faces.empty()) s = input.surfaces[1 - slot];
+    if (!input.surfaces[slot]) input.surfaces[slot] = std::make_shared<MeshingSurface>(*input.surfaces[1 - slot]);
+    MeshingSurface &s = *input.surfaces[slot];
     std::string error;
     if (!AssignRegions(s, partition.faceRegion, regionCount, error)) return trial;
     const std::vector<Proxy> &proxies = input.proxies[slot] = UsableProxies(s, partition.proxies);
@@ -351,7 +355,7 @@ RegionTrial TrialMeshRegions(TrialSetup<CoordType> &input, const Partition &part
     input.latest = std::make_unique<CellMesher<CoordType>>(
         s, proxies, ChordDeviationBound(s, proxies, once.chordErrorFactor), once, 0,
         once.chordGapThreshold > 0 ? input.gapTest.get() : nullptr, input.intersections, input.passes, nullptr,
-        input.latest.get());
+        input.latest ? std::optional<CellFlooding>(std::move(input.latest->Flooding())) : std::nullopt);
     input.latestSurface = slot;
     input.latest->Repair();
     const MeshingPass &pass = input.latest->Best().pass;
@@ -400,14 +404,15 @@ inline std::vector<int> RegionsToSplit(const RegionTrial &trial, const Partition
 /// Lloyd iterations confined to it (Approximation::Split), and tests again, until every
 /// region passes, k' reaches its cap, or the rounds run out.
 ///
-/// `surface`, if given, receives the last trial's meshing surface, labelled with the final
-/// partition, for BuildApproximatingMesh to start from (null when there was no trial).
+/// `start`, if given, receives the last trial's surface, labelled with the final partition,
+/// and its cells' floodings, for BuildApproximatingMesh to start from (no surface when there
+/// was no trial).
 template <class CoordType>
 MeshablePartitionReport MakePartitionMeshable(Approximation &approximation, const MeshingParam &meshing,
                                               const MeshablePartitionParam &param, vcg::CallBackPos *cb = nullptr,
-                                              std::shared_ptr<MeshingSurface> *surface = nullptr)
+                                              MeshingStart *start = nullptr)
 {
-    if (surface) surface->reset();
+    if (start) start->surface.reset(), start->flooding.reset();
     MeshablePartitionReport report;
     report.proxiesRequested = report.proxiesFinal = approximation.ProxyCount();
     if (!param.enabled) return report;
@@ -438,8 +443,10 @@ MeshablePartitionReport MakePartitionMeshable(Approximation &approximation, cons
         ++report.rounds;
     }
     report.proxiesFinal = approximation.ProxyCount();
-    if (surface && input.latest)
-        *surface = std::make_shared<MeshingSurface>(std::move(input.surfaces[input.latestSurface]));
+    if (start && input.latest) {
+        start->surface = input.surfaces[input.latestSurface];
+        start->flooding.emplace(std::move(input.latest->Flooding()));
+    }
     progress.Done();
     return report;
 }

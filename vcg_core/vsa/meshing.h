@@ -20,6 +20,7 @@
 #include <cmath>
 #include <limits>
 #include <memory>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <type_traits>
@@ -74,10 +75,10 @@ public:
     const MeshingSurface &BestSurface() const { return *bestSurface_; }
     const typename Mesher::Attempt &Best() const { return best_->Best(); }
 
-    /// The first surface, meshed with repairs.
-    void Repair()
+    /// The first surface, meshed with repairs; `flooding`: its cells' floodings, if known.
+    void Repair(std::optional<CellFlooding> flooding)
     {
-        best_ = MesherOf(*surface_, &progress_, nullptr);
+        best_ = MesherOf(*surface_, &progress_, std::move(flooding));
         best_->Repair();
     }
 
@@ -188,11 +189,12 @@ private:
     std::shared_ptr<MeshingSurface> bestSurface_;
     std::unique_ptr<Mesher> best_;  ///< the mesher of bestSurface_
 
-    std::unique_ptr<Mesher> MesherOf(const MeshingSurface &cells, ProgressStage *progress, const Mesher *earlier)
+    std::unique_ptr<Mesher> MesherOf(const MeshingSurface &cells, ProgressStage *progress,
+                                     std::optional<CellFlooding> earlier)
     {
         return std::make_unique<Mesher>(cells, proxies_, chordDeviationBound_, param_, clearance_,
                                          param_.chordGapThreshold > 0 ? &gapTest_ : nullptr, inputIntersections_,
-                                         report_.passes, progress, earlier);
+                                         report_.passes, progress, std::move(earlier));
     }
 
     /// A surface split (halved or carved) from the one `earlier` meshed, with its cells rebuilt
@@ -202,7 +204,7 @@ private:
     {
         std::string internalError;
         if (!BuildCellsAndLoops(split, internalError)) return nullptr;
-        std::unique_ptr<Mesher> mesher = MesherOf(split, nullptr, &earlier);
+        std::unique_ptr<Mesher> mesher = MesherOf(split, nullptr, earlier.Flooding());
         mesher->Repair();
         return mesher;
     }
@@ -279,6 +281,15 @@ void WriteOutputMesh(const MeshingPass &pass, bool polygonal, OutMeshType &out)
 
 }  // namespace detail
 
+/// Where the meshing of a partition may start (see MakePartitionMeshable, whose last trial
+/// leaves it): a surface BuildMeshingSurface would build for it, and the floodings of that
+/// surface's cells, which the first pass updates instead of flooding every cell anew.
+struct MeshingStart
+{
+    std::shared_ptr<MeshingSurface> surface;
+    std::optional<CellFlooding> flooding;  ///< of `surface`'s cells, if known
+};
+
 /// Builds the approximating mesh of a partitioned mesh into `out` (cleared first).
 ///
 /// `in` is the flat snapshot the partition was computed on; `partition.faceRegion` labels its
@@ -289,13 +300,12 @@ void WriteOutputMesh(const MeshingPass &pass, bool polygonal, OutMeshType &out)
 /// returns a report with ok == false and the reason, and leaves `out` empty.
 /// OutMeshType needs per-face flags when param.polygonal is set.
 ///
-/// `labelled`, if given, is the surface BuildMeshingSurface would build from `in` and
-/// `partition` (MakePartitionMeshable's): the meshing starts from it instead. One labelled
-/// otherwise (IsLabelledAs) is not used.
+/// `start`, if it has a surface, is where the meshing starts (see MeshingStart); a surface
+/// labelled otherwise than `partition` (IsLabelledAs), or floodings of another surface, are
+/// not used.
 template <class OutMeshType>
 MeshingReport BuildApproximatingMesh(const IndexedMesh &in, const Partition &partition, const MeshingParam &param,
-                                     OutMeshType &out, vcg::CallBackPos *cb = nullptr,
-                                     std::shared_ptr<MeshingSurface> labelled = nullptr)
+                                     OutMeshType &out, vcg::CallBackPos *cb = nullptr, MeshingStart start = {})
 {
     RequireTriangularMesh(out);
     if (param.polygonal) RequirePerFaceFlags(out);
@@ -307,11 +317,12 @@ MeshingReport BuildApproximatingMesh(const IndexedMesh &in, const Partition &par
     ProgressStage progress(cb, "VSA meshing: cutting regions into discs");
     progress.Step(0, 20, detail::kMeshingSetupItems * in.FaceCount());
     const int regionCount = int(partition.proxies.size());
-    std::shared_ptr<MeshingSurface> surface = std::move(labelled);
+    std::shared_ptr<MeshingSurface> surface = std::move(start.surface);
     if (!surface || !IsLabelledAs(*surface, partition.faceRegion, regionCount)) {
         surface = std::make_shared<MeshingSurface>();
         if (!BuildMeshingSurface(in, partition.faceRegion, regionCount, *surface, report.error)) return report;
     }
+    if (start.flooding && &start.flooding->Surface() != surface.get()) start.flooding.reset();
     report.ignoredFaces = surface->ignoredFaces;
     report.splitVertices = surface->splitVertices;
     std::vector<int> regionCells(regionCount, 0);  // before any halving (see regionsCut)
@@ -320,7 +331,7 @@ MeshingReport BuildApproximatingMesh(const IndexedMesh &in, const Partition &par
     const double clearance = detail::SavedCoordinateClearance<typename OutMeshType::ScalarType>(in.positions);
     detail::SurfaceMeshing<typename OutMeshType::CoordType> meshing(in, surface, partition.proxies, param, clearance,
                                                                    report, progress);
-    meshing.Repair();
+    meshing.Repair(std::move(start.flooding));
     meshing.Halve();
     const double faceBudget = param.maxInputFacesGrowth * double(meshing.Best().pass.triangles.size());
     meshing.KeepInputFaces(faceBudget);

@@ -19,6 +19,7 @@
 #include <algorithm>
 #include <limits>
 #include <memory>
+#include <optional>
 #include <utility>
 #include <vector>
 
@@ -281,24 +282,27 @@ public:
     /// `proxies`: UsableProxies; `chordDeviationBound`: ChordDeviationBound; `clearance`:
     /// SavedCoordinateClearance of the output's scalar; `gapTest`: on
     /// `s`'s faces, or nullptr to leave the gap test out (chordGapThreshold 0). All three depend
-    /// on the regions only, not on how they are cut into cells. `earlier`: the mesher of the
-    /// surface `s` was split from (halved or carved), whose floodings its cells can update, or
-    /// nullptr.
+    /// on the regions only, not on how they are cut into cells. `earlier`: the floodings of the
+    /// surface `s` was split from (halved or carved) or relabelled from, or of `s` itself, which
+    /// its cells can update (see CellFlooding), or none.
     CellMesher(const MeshingSurface &s, const std::vector<Proxy> &proxies, double chordDeviationBound,
                const MeshingParam &param, double clearance, ChordGapTest *gapTest,
                InputIntersections &inputIntersections, int &passes, ProgressStage *progress,
-               const CellMesher *earlier = nullptr)
+               std::optional<CellFlooding> earlier = std::nullopt)
         : s_(s), proxies_(proxies), param_(param), clearance_(clearance), inputIntersections_(inputIntersections),
           passes_(passes), progress_(progress),
           subdivision_(s, proxies_, param.chordThreshold, chordDeviationBound, gapTest),
           requiredAnchors_(s.VertexCount(), 0), pinnedAnchors_(s.VertexCount(), 0), inputCells_(s.CellCount(), 0),
-          flooding_(earlier ? CellFlooding(s, earlier->flooding_) : CellFlooding(s))
+          flooding_(earlier ? CellFlooding(s, std::move(*earlier)) : CellFlooding(s))
     {
     }
     CellMesher(const CellMesher &) = delete;
     CellMesher &operator=(const CellMesher &) = delete;
 
     const Attempt &Best() const { return best_; }
+    /// The cells' floodings, for a mesher of a surface split or relabelled from this one.
+    const CellFlooding &Flooding() const { return flooding_; }
+    CellFlooding &Flooding() { return flooding_; }
 
     /// The first pass, then repair passes while defects remain (see RespondToDefects), until
     /// repairRounds or the repair diverges (see kRepairPatience).
