@@ -209,14 +209,15 @@ public:
         std::vector<char> fresh(in_.FaceCount(), 0);
         std::vector<int> freshFaces;
         ProgressCounter progress;
-        for (int f = 0; f < s.FaceCount(); ++f) {
+        ForEachFaceOfCells(s, cells, [&](int f) {
             progress.Count();
             const int source = s.sourceFace[f];
-            if (cells[s.faceCell[f]] && !tested_[source]) {
+            if (!tested_[source]) {
                 fresh[source] = tested_[source] = 1;
                 freshFaces.push_back(source);
             }
-        }
+        });
+        std::sort(freshFaces.begin(), freshFaces.end());  // tested in face order, as they always were
         if (!freshFaces.empty() && !grid_)
             grid_ = std::make_unique<SurfaceGrid>(in_.positions, in_.faces, Degenerate(), PairGridMargin(in_, 0));
         std::vector<int> metFrom(freshFaces.empty() ? 0 : in_.FaceCount(), -1);
@@ -244,12 +245,22 @@ private:
         return degenerate_;
     }
 
+    /// Calls visit(f) for each face f of the cells flagged in `cells`: few, after the first pass.
+    template <class Visit>
+    static void ForEachFaceOfCells(const MeshingSurface &s, const std::vector<char> &cells, Visit &&visit)
+    {
+        for (int c = 0; c < s.CellCount(); ++c)
+            if (cells[c])
+                for (int k = s.cellFaceOffset[c]; k < s.cellFaceOffset[c + 1]; ++k) visit(s.cellFaces[k]);
+    }
+
     static std::vector<char> CellsWithFacesFlagged(const MeshingSurface &s, const std::vector<char> &cells,
                                                    const std::vector<char> &inputFaceFlag)
     {
         std::vector<char> found(s.CellCount(), 0);
-        for (int f = 0; f < s.FaceCount(); ++f)
-            if (cells[s.faceCell[f]] && inputFaceFlag[s.sourceFace[f]]) found[s.faceCell[f]] = 1;
+        ForEachFaceOfCells(s, cells, [&](int f) {
+            if (inputFaceFlag[s.sourceFace[f]]) found[s.faceCell[f]] = 1;
+        });
         return found;
     }
 

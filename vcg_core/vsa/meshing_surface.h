@@ -632,10 +632,12 @@ inline bool RebuildChangedCells(MeshingSurface &s, const std::vector<int> &previ
         if (!measured[n]) fresh.push_back(n);
     const auto facesOf = [&s, &fresh](int k) { return s.CellFaceCount(fresh[k]); };
     ForEachGroup(int(fresh.size()), CellFaceTotal(s, fresh), facesOf, [&](int k) { MeasureCell(s, fresh[k]); });
-    // Junctions change only at the vertices of changed regions' faces.
+    // Junctions change only at the vertices of changed regions' faces; each is tested once.
+    std::vector<char> tested(s.VertexCount(), 0);
     for (int f = 0; f < faceCount; ++f)
         if (changed[s.faceRegion[f]])
-            for (int v : s.faces[f]) s.junction[v] = IsJunction(s, v);
+            for (int v : s.faces[f])
+                if (!tested[v]) tested[v] = 1, s.junction[v] = IsJunction(s, v);
     traced.insert(traced.end(), fresh.begin(), fresh.end());
     std::sort(traced.begin(), traced.end());
     return TraceCellLoops(s, traced, error);
