@@ -573,6 +573,17 @@ inline std::vector<int> RenumberCells(MeshingSurface &s, const std::vector<char>
     return newIndex;
 }
 
+/// Recomputes the junctions at the vertices of the faces of `changed` regions, each once: the
+/// only vertices whose boundary edges a relabelling can change.
+inline void UpdateJunctions(MeshingSurface &s, const std::vector<char> &changed)
+{
+    std::vector<char> tested(s.VertexCount(), 0);
+    for (int f = 0; f < s.FaceCount(); ++f)
+        if (changed[s.faceRegion[f]])
+            for (int v : s.faces[f])
+                if (!tested[v]) tested[v] = 1, s.junction[v] = IsJunction(s, v);
+}
+
 /// BuildCellsAndLoops for a surface whose cells were built before (one piece per region) and
 /// whose faces then changed regions from `previousRegion` to s.faceRegion: the cells of the
 /// regions that neither lost nor gained a face keep their faces, measures and loops, only
@@ -593,9 +604,8 @@ inline bool RebuildChangedCells(MeshingSurface &s, const std::vector<int> &previ
     for (int c = 0; c < previousCells; ++c) live[c] = !changed[s.cellRegion[c]];
     const std::vector<int> newIndex = RenumberCells(s, live);
     for (int &c : s.faceCell) c = newIndex[c];
-
-    const std::vector<int> previousOffset = std::move(s.cellFaceOffset);
     BuildOffsets(s.faceCell, s.CellCount(), s.cellFaceOffset, s.cellFaces);
+
     const std::vector<Point3d> areaVector = std::move(s.cellAreaVector), centroid = std::move(s.cellCentroid);
     const std::vector<double> doubleArea = std::move(s.cellDoubleArea);
     std::vector<std::vector<int>> loop = std::move(s.cellLoop), other = std::move(s.cellLoopOther);
@@ -606,15 +616,13 @@ inline bool RebuildChangedCells(MeshingSurface &s, const std::vector<int> &previ
     s.cellLoopOther.assign(s.CellCount(), {});
     // Kept cells keep their measures and loops; a loop is traced again where it runs along a
     // changed region, whose cells across it are new.
-    std::vector<int> traced;
-    std::vector<char> measured(s.CellCount(), 0);
+    std::vector<int> traced, fresh;
     for (int c = 0; c < previousCells; ++c) {
         const int n = newIndex[c];
         if (n < 0) continue;
         s.cellAreaVector[n] = areaVector[c];
         s.cellDoubleArea[n] = doubleArea[c];
         s.cellCentroid[n] = centroid[c];
-        measured[n] = 1;
         bool alongChanged = false;
         for (int &o : other[c]) {
             if (o >= 0 && newIndex[o] < 0) alongChanged = true;
@@ -627,17 +635,10 @@ inline bool RebuildChangedCells(MeshingSurface &s, const std::vector<int> &previ
             s.cellLoopOther[n] = std::move(other[c]);
         }
     }
-    std::vector<int> fresh;
-    for (int n = 0; n < s.CellCount(); ++n)
-        if (!measured[n]) fresh.push_back(n);
+    for (int c = previousCells; c < int(newIndex.size()); ++c) fresh.push_back(newIndex[c]);
     const auto facesOf = [&s, &fresh](int k) { return s.CellFaceCount(fresh[k]); };
     ForEachGroup(int(fresh.size()), CellFaceTotal(s, fresh), facesOf, [&](int k) { MeasureCell(s, fresh[k]); });
-    // Junctions change only at the vertices of changed regions' faces; each is tested once.
-    std::vector<char> tested(s.VertexCount(), 0);
-    for (int f = 0; f < faceCount; ++f)
-        if (changed[s.faceRegion[f]])
-            for (int v : s.faces[f])
-                if (!tested[v]) tested[v] = 1, s.junction[v] = IsJunction(s, v);
+    UpdateJunctions(s, changed);
     traced.insert(traced.end(), fresh.begin(), fresh.end());
     std::sort(traced.begin(), traced.end());
     return TraceCellLoops(s, traced, error);
