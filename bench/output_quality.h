@@ -9,6 +9,8 @@
 
 #include <vsa/mesh_validity.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <fstream>
 #include <numeric>
@@ -85,6 +87,28 @@ PolygonLabels LabelPolygons(const MeshType &m)
     return result;
 }
 
+/// How many of the polygons are not planar: some triangle's normal is more than
+/// kCoplanarDegrees from the polygon's area-weighted normal. A polygon joined by coplanarity
+/// can still bend, a little at each edge.
+template <class MeshType>
+int CountBentPolygons(const MeshType &m, const PolygonLabels &polygons)
+{
+    std::vector<vcg::Point3d> areaNormal(polygons.count, vcg::Point3d(0, 0, 0)), faceNormal;
+    for (const auto &f : m.face)
+        if (!f.IsD()) {
+            faceNormal.push_back(vcg::Point3d::Construct(vcg::TriangleNormal(f)));
+            areaNormal[polygons.faceLabel[faceNormal.size() - 1]] += faceNormal.back();
+        }
+    const double minCosine = std::cos(vcg::math::ToRad(kCoplanarDegrees));
+    std::vector<char> bent(polygons.count, 0);
+    for (size_t fi = 0; fi < faceNormal.size(); ++fi) {
+        const vcg::Point3d &n = faceNormal[fi], &sum = areaNormal[polygons.faceLabel[fi]];
+        if (n.Norm() > 0 && sum.Norm() > 0 && n * sum < minCosine * n.Norm() * sum.Norm())
+            bent[polygons.faceLabel[fi]] = 1;
+    }
+    return int(std::count(bent.begin(), bent.end(), 1));
+}
+
 /// One label per line, in face order: what bench/render_mesh.py draws outlines from.
 inline bool WritePolygonLabels(const std::string &path, const PolygonLabels &polygons)
 {
@@ -127,7 +151,9 @@ PolygonLabels AddOutputQualityKeys(JsonLine &line, InMeshType &input, OutMeshTyp
             .AddNull("facing_away")
             .AddNull("normal_deviation_deg");
     const PolygonLabels polygons = LabelPolygons(output);
-    line.Add("polygons", polygons.count).Add("polygons_from", polygons.fromFauxEdges ? "faux_edges" : "coplanar");
+    line.Add("polygons", polygons.count)
+        .Add("polygons_from", polygons.fromFauxEdges ? "faux_edges" : "coplanar")
+        .Add("bent_polygons", CountBentPolygons(output, polygons));
     if (regionsOut) line.Add("regions_out", *regionsOut);
     const int perRegion = regionsOut ? *regionsOut : polygons.count;
     if (perRegion > 0) line.Add("triangles_per_region", double(out.faces) / perRegion);
