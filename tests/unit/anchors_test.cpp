@@ -4,6 +4,7 @@
 #include "test_meshes.h"
 
 #include <vsa/anchors.h>
+#include <vsa/approximate_shape.h>
 #include <vsa/meshing.h>
 
 #include <gtest/gtest.h>
@@ -64,4 +65,35 @@ TEST(Anchors, AnchorProjectionAveragesThePlanesAndIsCapped)
     const double moved = (cornerOf(out, r, im, original) - original).Norm();
     const double shortestChord = (original - Point3d(1, 1, -1)).Norm();
     EXPECT_NEAR(moved, 0.002 * shortestChord, 1e-6);
+}
+
+/// A dome on a flat disc: the anchors around the disc are shared with the dome's regions,
+/// whose planes tilt. The disc is flat, so they go onto its plane, not to the average of the
+/// planes (which would lift them and bend the disc's polygon).
+TEST(Anchors, FlatRegionKeepsItsAnchorsOnItsPlane)
+{
+    TMesh dome, out;
+    vsa_test::MakeHemisphere(dome, 8, 32, /*flat=*/false, /*base=*/true);
+    ShapeApproximationParam param;
+    param.partition.proxyCount = 12;
+    const ShapeApproximationResult r = ApproximateShape(dome, out, param);
+    ASSERT_TRUE(r.ok) << r.error;
+    int onRim = 0;
+    for (int v = 0; v < out.VN(); ++v) {
+        const int source = r.meshing.vertexSource[v];
+        if (source < 0 || std::abs(dome.vert[source].cP()[2]) > 1e-6f) continue;
+        ++onRim;
+        EXPECT_NEAR(out.vert[v].cP()[2], 0.0, 1e-6) << "output vertex " << v;
+    }
+    EXPECT_GE(onRim, 3);
+    // And the disc's triangles all face straight down.
+    int down = 0;
+    for (const auto &f : out.face) {
+        const vcg::Point3f n = vcg::TriangleNormal(f).Normalize();
+        if (n[2] < -0.9f) {
+            ++down;
+            EXPECT_NEAR(n[2], -1.0f, 1e-6f);
+        }
+    }
+    EXPECT_GE(down, 1);
 }

@@ -120,8 +120,9 @@ inline void MakeTorus(TMesh &m, float R, float r, int nu, int nv)
 
 /// The upper unit hemisphere (z >= 0), a pole and `rings` rings of `sectors` vertices, the
 /// last ring on the equator as its open border; outward oriented. A disc: V - E + F = 1.
-/// With `flat`, the same connectivity laid flat on the unit disc of the plane z = 0.
-inline void MakeHemisphere(TMesh &m, int rings, int sectors, bool flat = false)
+/// With `flat`, the same connectivity laid flat on the unit disc of the plane z = 0. With
+/// `base`, closed by a fan of the equator around the origin: a solid dome on a flat disc.
+inline void MakeHemisphere(TMesh &m, int rings, int sectors, bool flat = false, bool base = false)
 {
     std::vector<vcg::Point3f> coords = {vcg::Point3f(0, 0, flat ? 0.f : 1.f)};
     std::vector<vcg::Point3i> tris;
@@ -139,6 +140,11 @@ inline void MakeHemisphere(TMesh &m, int rings, int sectors, bool flat = false)
             tris.emplace_back(at(k, s), at(k + 1, s), at(k + 1, s + 1));
             tris.emplace_back(at(k, s), at(k + 1, s + 1), at(k, s + 1));
         }
+    if (base) {
+        coords.emplace_back(0.f, 0.f, 0.f);
+        const int centre = int(coords.size()) - 1;
+        for (int s = 0; s < sectors; ++s) tris.emplace_back(centre, at(rings, s + 1), at(rings, s));
+    }
     BuildFromLists(m, coords, tris);
 }
 

@@ -7,6 +7,11 @@
 #include <vsa/chords.h>
 #include <vsa/meshing_surface.h>
 #include <vsa/proxy.h>
+#include <vsa/tuning.h>
+
+#include <vcg/space/box3.h>
+
+#include <Eigen/Eigenvalues>
 
 #include <algorithm>
 #include <array>
@@ -199,18 +204,77 @@ inline std::vector<std::vector<int>> CellPolygons(const MeshingSurface &s, const
     return polygons;
 }
 
-/// Where the anchors go. With `project`, each anchor moves to the average of its projections
-/// on the planes of the regions around it (the paper); that average never blows up, even for
-/// near-parallel planes, but on a strongly curved region a plane can be far from the vertex,
-/// so the move is capped at `maxMove` times the shortest chord at the anchor: an anchor never
-/// travels far enough to fold the output triangles around it. An anchor inside a single
-/// region (where cells of a region that is not a disc meet, away from the border) stays put:
-/// the cut is ours, not the partition's, and flattening it onto the one plane would flatten
-/// a closed region into a pancake. Without `project`, anchors stay at their input vertices,
-/// and so do anchors on surface vertices flagged in `pinned` (empty, or one flag per vertex).
-/// An anchor whose move would take a coordinate beyond `largestCoordinate` (the largest the
-/// output's scalar holds) stays put too: near the float limits a projection can leave the
-/// range, and the coordinate would be written as infinite.
+namespace detail {
+
+/// Per region, the farthest distance of its input vertices from its plane.
+inline std::vector<double> RegionFit(const MeshingSurface &s, const std::vector<Proxy> &proxies)
+{
+    std::vector<double> fit(proxies.size(), 0);
+    for (int f = 0; f < s.FaceCount(); ++f) {
+        const Proxy &p = proxies[s.faceRegion[f]];
+        for (int v : s.faces[f])
+            fit[s.faceRegion[f]] = std::max(fit[s.faceRegion[f]], std::abs((s.positions[v] - p.point) * p.normal));
+    }
+    return fit;
+}
+
+/// The paper's move: from p to the average of its projections on the planes of `regions`.
+inline Point3d MoveToAverageProjection(const Point3d &p, const std::vector<int> &regions,
+                                       const std::vector<Proxy> &proxies)
+{
+    Point3d sum(0, 0, 0);
+    for (int r : regions) sum += p - proxies[r].normal * ((p - proxies[r].point) * proxies[r].normal);
+    return sum / double(regions.size()) - p;
+}
+
+/// The move from p that puts it on the planes of the flat regions (least squares, shortest
+/// move: the nearest point of two planes' line, three planes' common point), then moves it, in
+/// the directions those planes leave free, by the average projection on the other regions'
+/// planes. Directions in which the flat planes barely constrain the point (near-parallel
+/// planes) are left free, so the move stays bounded where their meeting point would run away.
+inline Point3d MoveOntoFlatPlanes(const Point3d &p, const std::vector<int> &flat, const std::vector<int> &curved,
+                                  const std::vector<Proxy> &proxies)
+{
+    Eigen::Matrix3d normals = Eigen::Matrix3d::Zero();
+    Eigen::Vector3d pull = Eigen::Vector3d::Zero();
+    for (int r : flat) {
+        const Eigen::Vector3d n(proxies[r].normal[0], proxies[r].normal[1], proxies[r].normal[2]);
+        normals += n * n.transpose();
+        pull += n * ((proxies[r].point - p) * proxies[r].normal);
+    }
+    const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver(normals);
+    const Eigen::Vector3d strength = solver.eigenvalues();  // increasing
+    Eigen::Vector3d move = Eigen::Vector3d::Zero();
+    std::vector<Eigen::Vector3d> free;
+    for (int i = 0; i < 3; ++i) {
+        const Eigen::Vector3d axis = solver.eigenvectors().col(i);
+        if (strength[i] > kPlaneConstraint * strength[2]) move += axis * (axis.dot(pull) / strength[i]);
+        else free.push_back(axis);
+    }
+    if (!curved.empty()) {
+        const Point3d average = MoveToAverageProjection(p + Point3d(move[0], move[1], move[2]), curved, proxies);
+        const Eigen::Vector3d towardCurved(average[0], average[1], average[2]);
+        for (const Eigen::Vector3d &axis : free) move += axis * axis.dot(towardCurved);
+    }
+    return Point3d(move[0], move[1], move[2]);
+}
+
+}  // namespace detail
+
+/// Where the anchors go. With `project`, each anchor moves onto the planes of the regions
+/// around it: exactly onto those of the flat regions (input within kFlatRegion of the mesh's
+/// size from the plane), so that their polygons stay planar, and to the average of its
+/// projections on the others (the paper; that average never blows up, even for near-parallel
+/// planes). On a strongly curved region a plane can be far from the vertex, so the move is
+/// capped at `maxMove` times the shortest chord at the anchor: an anchor never travels far
+/// enough to fold the output triangles around it. An anchor inside a single region (where
+/// cells of a region that is not a disc meet, away from the border) stays put: the cut is
+/// ours, not the partition's, and flattening it onto the one plane would flatten a closed
+/// region into a pancake. Without `project`, anchors stay at their input vertices, and so do
+/// anchors on surface vertices flagged in `pinned` (empty, or one flag per vertex). An anchor
+/// whose move would take a coordinate beyond `largestCoordinate` (the largest the output's
+/// scalar holds) stays put too: near the float limits a projection can leave the range, and
+/// the coordinate would be written as infinite.
 inline std::vector<Point3d> PlaceAnchors(const MeshingSurface &s, const AnchorSet &anchors,
                                          const std::vector<std::vector<int>> &polygons,
                                          const std::vector<Proxy> &proxies, bool project, double maxMove,
@@ -229,7 +293,11 @@ inline std::vector<Point3d> PlaceAnchors(const MeshingSurface &s, const AnchorSe
             shortestChord[a] = std::min(shortestChord[a], length);
             shortestChord[b] = std::min(shortestChord[b], length);
         }
-    std::vector<int> regions;
+    const std::vector<double> fit = detail::RegionFit(s, proxies);
+    Box3d box;
+    for (const Point3d &p : s.positions) box.Add(p);
+    const double flatTolerance = detail::kFlatRegion * box.Diag();
+    std::vector<int> regions, flat, curved;
     for (int a = 0; a < anchorCount; ++a) {
         const int v = anchors.vertexOfAnchor[a];
         if (!pinned.empty() && pinned[v]) continue;
@@ -239,10 +307,12 @@ inline std::vector<Point3d> PlaceAnchors(const MeshingSurface &s, const AnchorSe
         std::sort(regions.begin(), regions.end());
         regions.erase(std::unique(regions.begin(), regions.end()), regions.end());
         if (regions.size() == 1 && !s.onBorder[v]) continue;
+        flat.clear();
+        curved.clear();
+        for (int r : regions) (fit[r] <= flatTolerance ? flat : curved).push_back(r);
         const Point3d &p = placed[a];
-        Point3d sum(0, 0, 0);
-        for (int r : regions) sum += p - proxies[r].normal * ((p - proxies[r].point) * proxies[r].normal);
-        Point3d move = sum / double(regions.size()) - p;
+        Point3d move = flat.empty() ? detail::MoveToAverageProjection(p, regions, proxies)
+                                    : detail::MoveOntoFlatPlanes(p, flat, curved, proxies);
         const double limit = maxMove * shortestChord[a];
         if (move.Norm() > limit) move *= limit / move.Norm();
         const Point3d moved = p + move;

@@ -188,19 +188,6 @@ inline void MeasureFacingAway(const MeshingSurface &s, const MeshingPass &pass, 
     for (int r = 0; r < regionCount; ++r) trial.facingAway[r] = area[r] > 0 ? away[r] / area[r] : 0;
 }
 
-
-/// Per region, the farthest distance of its input vertices from its plane.
-inline std::vector<double> RegionFit(const MeshingSurface &s, const std::vector<Proxy> &proxies)
-{
-    std::vector<double> fit(proxies.size(), 0);
-    for (int f = 0; f < s.FaceCount(); ++f) {
-        const Proxy &p = proxies[s.faceRegion[f]];
-        for (int v : s.faces[f])
-            fit[s.faceRegion[f]] = std::max(fit[s.faceRegion[f]], std::abs((s.positions[v] - p.point) * p.normal));
-    }
-    return fit;
-}
-
 /// Distance from p to the nearest of triangles [first, last) of `order` in `pass`; or, as soon
 /// as one is no farther than `enough`, that one's distance (enough to know p is not the
 /// farthest point). Starts at triangle `hint` of the range, and leaves there the nearest one

@@ -34,7 +34,8 @@ struct MeshingParam
     /// chain no longer cuts off a corner of its region. 0 leaves the paper's criterion alone.
     /// 1 lowers the error where it can for few more faces (docs/tuning.md).
     double chordErrorFactor = 1;
-    /// Move each anchor to the average of its projections on the planes of its regions.
+    /// Move each anchor onto the planes of its regions: exactly onto those of flat regions, to
+    /// the average of its projections on the others (see PlaceAnchors).
     bool projectAnchors = true;
     /// Cap on that move, as a fraction of the shortest chord at the anchor.
     double maxAnchorMove = 0.5;

@@ -45,6 +45,8 @@ constexpr double kCheckItems = 20;        ///< per output face: indexing the wri
 
 // Chords and cells (chords.h, cell_triangulation.h).
 constexpr int kChordGapSamples = 8;  ///< points the gap test tries along a chord: it strays over a hole, not a point
+constexpr double kFlatRegion = 1e-5;       ///< of the diagonal: a region this close to its plane is flat, far above float rounding
+constexpr double kPlaneConstraint = 1e-3;  ///< flat planes within 2.6 degrees of parallel do not fix a point between them
 constexpr double kGoodFan = 0.05;    ///< a fan whose thinnest triangle has this sine of its smallest angle will do
 
 // Repairs, halving, carving (meshing_repair.h, meshing.h, cell_splitting.h): see PassDefects::BetterThan.
