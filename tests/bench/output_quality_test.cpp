@@ -57,6 +57,25 @@ TEST(OutputQuality, FauxEdgesAloneJoinFacesWhenTheMeshHasThem)
     EXPECT_EQ(vsa_bench::LabelPolygons(cube).count, 6);
 }
 
+/// A side whose centre is lifted by a tenth of its half-width bends by 5.7 degrees: one polygon
+/// of six is bent when the sides are joined by faux edges; by coplanarity that side falls apart
+/// into triangles, each planar.
+TEST(OutputQuality, BentPolygonsAreThoseWithATriangleOffTheirPlane)
+{
+    TMesh cube;
+    vsa_test::MakeTessellatedCube(cube, 2);
+    EXPECT_EQ(vsa_bench::CountBentPolygons(cube, vsa_bench::LabelPolygons(cube)), 0);
+    for (auto &v : cube.vert)
+        if (v.P() == vcg::Point3f(1, 0, 0)) v.P() = vcg::Point3f(1.1f, 0, 0);
+    const vsa_bench::PolygonLabels byPlane = vsa_bench::LabelPolygons(cube);
+    EXPECT_EQ(byPlane.count, 5 + 8);
+    EXPECT_EQ(vsa_bench::CountBentPolygons(cube, byPlane), 0);
+    MarkSideInteriorsFaux(cube, 0, cube.face.size());
+    const vsa_bench::PolygonLabels byFauxEdges = vsa_bench::LabelPolygons(cube);
+    EXPECT_EQ(byFauxEdges.count, 6);
+    EXPECT_EQ(vsa_bench::CountBentPolygons(cube, byFauxEdges), 1);
+}
+
 TEST(OutputQuality, KeysCountTrianglesPerRegionOrPerPolygon)
 {
     TMesh cube, copy;
@@ -66,7 +85,7 @@ TEST(OutputQuality, KeysCountTrianglesPerRegionOrPerPolygon)
     vsa_bench::AddOutputQualityKeys(line, cube, copy);
     const std::string keys = line.Str();
     EXPECT_NE(keys.find("\"facing_away\":0,\"normal_deviation_deg\":0,\"polygons\":6,\"polygons_from\":\"coplanar\","
-                        "\"triangles_per_region\":8}"),
+                        "\"bent_polygons\":0,\"triangles_per_region\":8}"),
               std::string::npos)
         << keys;
 

@@ -229,9 +229,11 @@ inline Point3d MoveToAverageProjection(const Point3d &p, const std::vector<int> 
 
 /// The move from p that puts it on the planes of the flat regions (least squares, shortest
 /// move: the nearest point of two planes' line, three planes' common point), then moves it, in
-/// the directions those planes leave free, by the average projection on the other regions'
-/// planes. Directions in which the flat planes barely constrain the point (near-parallel
-/// planes) are left free, so the move stays bounded where their meeting point would run away.
+/// the directions those planes leave free, as the paper's average over all the regions would:
+/// the flat planes add nothing in those directions, so the curved regions' projections are
+/// summed and divided by the count of all. Directions in which the flat planes barely
+/// constrain the point (near-parallel planes) are left free, so the move stays bounded where
+/// their meeting point would run away.
 inline Point3d MoveOntoFlatPlanes(const Point3d &p, const std::vector<int> &flat, const std::vector<int> &curved,
                                   const std::vector<Proxy> &proxies)
 {
@@ -252,7 +254,8 @@ inline Point3d MoveOntoFlatPlanes(const Point3d &p, const std::vector<int> &flat
         else free.push_back(axis);
     }
     if (!curved.empty()) {
-        const Point3d average = MoveToAverageProjection(p + Point3d(move[0], move[1], move[2]), curved, proxies);
+        const Point3d average = MoveToAverageProjection(p + Point3d(move[0], move[1], move[2]), curved, proxies) *
+                                (double(curved.size()) / double(curved.size() + flat.size()));
         const Eigen::Vector3d towardCurved(average[0], average[1], average[2]);
         for (const Eigen::Vector3d &axis : free) move += axis * axis.dot(towardCurved);
     }
