@@ -76,6 +76,24 @@ def clean_input(case):
             and i.get("duplicate_faces") == 0)
 
 
+def unwelded_input(case):
+    """Every face its own three vertices (an STL never welded): a bad input, to be refused with
+    the hint to weld it first rather than approximated by itself."""
+    i = case["input"]
+    faces = i.get("out_faces") or 0
+    return faces >= 2 and i.get("out_vertices") == 3 * faces and i.get("euler_out") == faces
+
+
+WELD_HINT = "weld it first"
+
+
+def weld_hint_value(case, r):
+    """On an unwelded input: 0 when the tool refused it with the hint, else 1."""
+    if not unwelded_input(case):
+        return None
+    return 0 if WELD_HINT in (r.get("error") or "") else 1
+
+
 def self_intersection_value(case, r):
     """Intersecting pairs beyond what is allowed (0 when the target is met)."""
     if not has_output(r) or r.get("self_intersections") is None:
@@ -133,6 +151,8 @@ TARGETS = [
     ("beats_qecd", "Hausdorff and normal deviation below QECD's at k' triangles", 0.90, versus_qecd,
      lambda v: v < 1),
     ("time_vs_cgal", "our whole time <= CGAL's", 1.0, time_ratio, lambda v: v <= 1),
+    ("weld_hint", "an unwelded input is refused with the hint to '%s'" % WELD_HINT, 1.0, weld_hint_value,
+     lambda v: v == 0),
 ]
 
 
@@ -143,7 +163,10 @@ def verdicts(case, tool):
     if (record.get("error") or "").startswith("skipped"):
         return {}
     out = {}
+    refused = weld_hint_value(case, record) == 0  # a bad input refused as it should be: nothing to measure
     for key, _, _, value, passes in TARGETS:
+        if refused and key != "weld_hint":
+            continue
         v = value(case, record)
         if v is not None:
             out[key] = [v if math.isfinite(v) else None, bool(passes(v))]

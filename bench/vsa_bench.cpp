@@ -194,6 +194,10 @@ int main(int argc, char **argv)
         ProgressStage setup(&NoteProgress, "VSA: setting up");  // as ApproximateShape reports it
         setup.Step(0, 100, vcg::tri::vsa::detail::kSetupItems * m.FN());
         IndexedMesh snapshot = BuildIndexedMesh(m);
+        if (IsTriangleSoup(snapshot)) {  // refused as ApproximateShape refuses it
+            json.Add("error", std::string("refused: ") + kTriangleSoupRefusal).Print();
+            return 1;
+        }
         const int collapsed = CollapseCoincidentEdgesIfMeshable(snapshot);  // as ApproximateShape does
         Approximation approximation(std::move(snapshot), o.param);
         setup.Done();

@@ -131,6 +131,11 @@ void KeepBetterOfAsked(const IndexedMesh &mesh, const ApproximationResult &asked
 
 }  // namespace detail
 
+/// Why an unwelded mesh (IsTriangleSoup) is refused, and what to do about it.
+inline const char *const kTriangleSoupRefusal =
+    "Every face of the mesh is a separate piece (no two faces share a vertex): weld it first (MeshLab: Cleaning "
+    "and Repairing > Merge Close Vertices).";
+
 /// Whether no two faces of a mesh of several faces share a vertex: an unwelded STL, whose only
 /// approximation would be itself.
 inline bool IsTriangleSoup(const IndexedMesh &m)
@@ -236,8 +241,7 @@ ShapeApproximationResult ApproximateShape(const InMeshType &in, OutMeshType &out
             return result;
         }
         if (IsTriangleSoup(snapshot)) {
-            result.error = "Every face of the mesh is a separate piece (no two faces share a vertex): weld it "
-                           "first (MeshLab: Cleaning and Repairing > Merge Close Vertices).";
+            result.error = kTriangleSoupRefusal;
             return result;
         }
         const int collapsed = CollapseCoincidentEdgesIfMeshable(snapshot);
