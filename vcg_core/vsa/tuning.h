@@ -32,7 +32,7 @@ constexpr double kTrialItems = 16;       ///< per face of a trial: its regions a
 constexpr double kInputPairsItems = 12;  ///< per face, in the first trial only: the grid and shapes of the input's faces for their own intersections
 constexpr int kNearestFaceItems = 128;   ///< a nearest-face query of the facing-away test takes about as long as 128 faces' share of a pass
 constexpr double kFacingAwayShare = 0.01;  ///< a region faces away past this share of its area facing the input's back
-constexpr double kStrayAllowance = 2e-3;   ///< of the diagonal: projected anchors move even exact planes' triangles
+constexpr double kStrayAllowance = 2e-3;   ///< of the diagonal: projected anchors move even nearly flat regions' triangles
 
 // Grids (surface_grid.h).
 constexpr double kBoxSlack = 1e-9;  ///< the nearest-face search skips boxes this much beyond its best distance: far above rounding
@@ -43,10 +43,12 @@ constexpr double kHalvingPasses = 4;      ///< a halving round meshes the whole 
 constexpr double kFirstPassItems = 8;     ///< per surface face: the first pass's anchors, chords and cell floodings (a repair pass ticks once)
 constexpr double kCheckItems = 20;        ///< per output face: indexing the written mesh, then checking it
 
-// Chords and cells (chords.h, cell_triangulation.h).
-constexpr int kChordGapSamples = 8;  ///< points the gap test tries along a chord: it strays over a hole, not a point
+// Anchors (anchors.h).
 constexpr double kFlatRegion = 1e-5;       ///< of the diagonal: a region this close to its plane is flat, far above float rounding
 constexpr double kPlaneConstraint = 1e-3;  ///< flat planes within 2.6 degrees of parallel do not fix a point between them
+
+// Chords and cells (chords.h, cell_triangulation.h).
+constexpr int kChordGapSamples = 8;  ///< points the gap test tries along a chord: it strays over a hole, not a point
 constexpr double kGoodFan = 0.05;    ///< a fan whose thinnest triangle has this sine of its smallest angle will do
 
 // Repairs, halving, carving (meshing_repair.h, meshing.h, cell_splitting.h): see PassDefects::BetterThan.
