@@ -147,8 +147,9 @@ def draw_outlines(image, depth, x, y, z, edges, camera):
 
 
 def panel(items, out_png, up="y", size=320, second_view=False):
-    """items: (off path, labels path or None, caption) per column; the first sets the camera."""
-    meshes = [read_off(path) for path, _, _ in items]
+    """items: (off path, labels path or None, caption) per column; the first sets the camera. A
+    column without a path (a tool that gave no mesh) shows its caption alone."""
+    meshes = [read_off(path) if path else None for path, _, _ in items]
     views = [False, True] if second_view else [False]
     caption_height = CAPTION_LINES * LINE_HEIGHT + 6
     sheet = Image.new("RGB", (size * len(items), size * len(views) + caption_height), "white")
@@ -156,9 +157,11 @@ def panel(items, out_png, up="y", size=320, second_view=False):
     draw = ImageDraw.Draw(sheet)
     for row, opposite in enumerate(views):
         camera = Camera(meshes[0][0], up, size, opposite)
-        for column, ((vertices, triangles), (_, labels_path, _)) in enumerate(zip(meshes, items)):
+        for column, (mesh, (_, labels_path, _)) in enumerate(zip(meshes, items)):
+            if mesh is None:
+                continue
             labels = read_labels(labels_path) if labels_path else None
-            sheet.paste(render(vertices, triangles, labels, camera), (column * size, row * size))
+            sheet.paste(render(mesh[0], mesh[1], labels, camera), (column * size, row * size))
     for column, (_, _, caption) in enumerate(items):
         for line_number, line in enumerate(caption.split("\n")[:CAPTION_LINES]):
             draw.text((column * size + 4, size * len(views) + 3 + line_number * LINE_HEIGHT), line, fill="black",

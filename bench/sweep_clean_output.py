@@ -26,6 +26,7 @@ import json
 import math
 import os
 import sys
+import textwrap
 
 from run_bench import MESHES_DIR, REPO, find_tool, fmt, labels_path, run_json, run_qecd, validity_label
 
@@ -197,6 +198,8 @@ def draw_panel(case, out_png, size):
         mesh = r.get("out_mesh")
         if has_output(r) and os.path.exists(mesh):
             items.append((mesh, labels_path(mesh) if os.path.exists(labels_path(mesh)) else None, caption(tool, r)))
+        elif r.get("error") and not r["error"].startswith("skipped"):  # a refusal or a failure says why
+            items.append((None, None, "\n".join(textwrap.wrap("%s: %s" % (tool, r["error"]), size // 6))))
     render_mesh.panel(items, out_png, up=case["up"], size=size)
 
 
