@@ -9,8 +9,6 @@
 #include <vsa/proxy.h>
 #include <vsa/tuning.h>
 
-#include <vcg/space/box3.h>
-
 #include <Eigen/Eigenvalues>
 
 #include <algorithm>
@@ -206,16 +204,13 @@ inline std::vector<std::vector<int>> CellPolygons(const MeshingSurface &s, const
 
 namespace detail {
 
-/// Per region, the farthest distance of its input vertices from its plane.
-inline std::vector<double> RegionFit(const MeshingSurface &s, const std::vector<Proxy> &proxies)
+/// Per region, whether it is flat: its input within kFlatRegion of the surface's size from its
+/// plane. Its polygon then stays planar (see PlaceAnchors).
+inline std::vector<char> FlatRegions(const RegionFits &fits)
 {
-    std::vector<double> fit(proxies.size(), 0);
-    for (int f = 0; f < s.FaceCount(); ++f) {
-        const Proxy &p = proxies[s.faceRegion[f]];
-        for (int v : s.faces[f])
-            fit[s.faceRegion[f]] = std::max(fit[s.faceRegion[f]], std::abs((s.positions[v] - p.point) * p.normal));
-    }
-    return fit;
+    std::vector<char> flat(fits.fit.size());
+    for (size_t r = 0; r < flat.size(); ++r) flat[r] = fits.fit[r] <= kFlatRegion * fits.diagonal;
+    return flat;
 }
 
 /// The paper's move: from p to the average of its projections on the planes of `regions`.
@@ -265,23 +260,24 @@ inline Point3d MoveOntoFlatPlanes(const Point3d &p, const std::vector<int> &flat
 }  // namespace detail
 
 /// Where the anchors go. With `project`, each anchor moves onto the planes of the regions
-/// around it: exactly onto those of the flat regions (input within kFlatRegion of the mesh's
-/// size from the plane), so that their polygons stay planar, and to the average of its
-/// projections on the others (the paper; that average never blows up, even for near-parallel
-/// planes). On a strongly curved region a plane can be far from the vertex, so the move is
-/// capped at `maxMove` times the shortest chord at the anchor: an anchor never travels far
-/// enough to fold the output triangles around it. An anchor inside a single region (where
-/// cells of a region that is not a disc meet, away from the border) stays put: the cut is
-/// ours, not the partition's, and flattening it onto the one plane would flatten a closed
-/// region into a pancake. Without `project`, anchors stay at their input vertices, and so do
-/// anchors on surface vertices flagged in `pinned` (empty, or one flag per vertex). An anchor
-/// whose move would take a coordinate beyond `largestCoordinate` (the largest the output's
-/// scalar holds) stays put too: near the float limits a projection can leave the range, and
-/// the coordinate would be written as infinite.
+/// around it: exactly onto those of the regions flagged in `flatRegion` (see FlatRegions), so
+/// that their polygons stay planar, and to the average of its projections on the others (the
+/// paper; that average never blows up, even for near-parallel planes). On a strongly curved
+/// region a plane can be far from the vertex, so the move is capped at `maxMove` times the
+/// shortest chord at the anchor: an anchor never travels far enough to fold the output
+/// triangles around it. An anchor inside a single region (where cells of a region that is not
+/// a disc meet, away from the border) stays put: the cut is ours, not the partition's, and
+/// flattening it onto the one plane would flatten a closed region into a pancake. Without
+/// `project`, anchors stay at their input vertices, and so do anchors on surface vertices
+/// flagged in `pinned` (empty, or one flag per vertex). An anchor whose move would take a
+/// coordinate beyond `largestCoordinate` (the largest the output's scalar holds) stays put too:
+/// near the float limits a projection can leave the range, and the coordinate would be written
+/// as infinite.
 inline std::vector<Point3d> PlaceAnchors(const MeshingSurface &s, const AnchorSet &anchors,
                                          const std::vector<std::vector<int>> &polygons,
-                                         const std::vector<Proxy> &proxies, bool project, double maxMove,
-                                         double largestCoordinate, const std::vector<char> &pinned = {})
+                                         const std::vector<Proxy> &proxies, const std::vector<char> &flatRegion,
+                                         bool project, double maxMove, double largestCoordinate,
+                                         const std::vector<char> &pinned = {})
 {
     const int anchorCount = anchors.Count();
     std::vector<Point3d> placed(anchorCount);
@@ -296,10 +292,6 @@ inline std::vector<Point3d> PlaceAnchors(const MeshingSurface &s, const AnchorSe
             shortestChord[a] = std::min(shortestChord[a], length);
             shortestChord[b] = std::min(shortestChord[b], length);
         }
-    const std::vector<double> fit = detail::RegionFit(s, proxies);
-    Box3d box;
-    for (const Point3d &p : s.positions) box.Add(p);
-    const double flatTolerance = detail::kFlatRegion * box.Diag();
     std::vector<int> regions, flat, curved;
     for (int a = 0; a < anchorCount; ++a) {
         const int v = anchors.vertexOfAnchor[a];
@@ -312,7 +304,7 @@ inline std::vector<Point3d> PlaceAnchors(const MeshingSurface &s, const AnchorSe
         if (regions.size() == 1 && !s.onBorder[v]) continue;
         flat.clear();
         curved.clear();
-        for (int r : regions) (fit[r] <= flatTolerance ? flat : curved).push_back(r);
+        for (int r : regions) (flatRegion[r] ? flat : curved).push_back(r);
         const Point3d &p = placed[a];
         Point3d move = flat.empty() ? detail::MoveToAverageProjection(p, regions, proxies)
                                     : detail::MoveOntoFlatPlanes(p, flat, curved, proxies);

@@ -127,6 +127,31 @@ private:
     std::unique_ptr<SurfaceGrid> surface_;
 };
 
+/// How far each region's input lies from its plane (the farthest of its vertices), and the
+/// size of the surface: what the chord bound, the anchors' flat regions and the stray test all
+/// measure against, in one pass over the faces for given regions and planes.
+struct RegionFits
+{
+    std::vector<double> fit;  ///< per region
+    double diagonal = 0;      ///< of the surface's bounding box
+};
+
+inline RegionFits MeasureRegionFits(const MeshingSurface &s, const std::vector<Proxy> &proxies)
+{
+    RegionFits fits;
+    fits.fit.assign(proxies.size(), 0);
+    ProgressCounter progress;
+    for (int f = 0; f < s.FaceCount(); ++f, progress.Count()) {
+        const int r = s.faceRegion[f];
+        for (int v : s.faces[f])
+            fits.fit[r] = std::max(fits.fit[r], std::abs((s.positions[v] - proxies[r].point) * proxies[r].normal));
+    }
+    Box3d box;
+    for (const Point3d &p : s.positions) box.Add(p);
+    fits.diagonal = box.Diag();
+    return fits;
+}
+
 /// How far any chain may stray from its chord (d * weight, see ChainAngleWeight), whatever
 /// its length: `factor` times the partition's own error, the largest distance of a vertex from
 /// its region's proxy plane. The paper's criterion alone lets a long chain cut a corner of its
@@ -134,19 +159,12 @@ private:
 /// CAD mesh whose regions are exactly planar kept its cut corners for any k). Planes within
 /// 1e-6 times the bounding-box diagonal count as exact, so that rounding does not split
 /// straight chains. Infinite when factor is 0.
-inline double ChordDeviationBound(const MeshingSurface &s, const std::vector<Proxy> &proxies, double factor)
+inline double ChordDeviationBound(const RegionFits &fits, double factor)
 {
     if (!(factor > 0)) return std::numeric_limits<double>::infinity();
     double planeError = 0;
-    ProgressCounter progress;
-    for (int f = 0; f < s.FaceCount(); ++f, progress.Count()) {
-        const Proxy &proxy = proxies[s.faceRegion[f]];
-        for (int v : s.faces[f])
-            planeError = std::max(planeError, std::abs((s.positions[v] - proxy.point) * proxy.normal));
-    }
-    Box3d box;
-    for (const Point3d &p : s.positions) box.Add(p);
-    return std::max(factor * planeError, 1e-6 * box.Diag());
+    for (double fit : fits.fit) planeError = std::max(planeError, fit);
+    return std::max(factor * planeError, 1e-6 * fits.diagonal);
 }
 
 /// The chord subdivision of chains: each chain is split recursively at its vertex farthest

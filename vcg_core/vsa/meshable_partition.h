@@ -235,14 +235,11 @@ inline void TrianglesByRegion(const MeshingSurface &s, const MeshingPass &pass, 
 
 /// Per region, how far the input vertices inside it stray from its triangles over what they
 /// may (the stray test).
-inline void MeasureStray(const MeshingSurface &s, const MeshingPass &pass, const std::vector<Proxy> &proxies,
+inline void MeasureStray(const MeshingSurface &s, const MeshingPass &pass, const RegionFits &fits,
                          double strayFactor, RegionTrial &trial)
 {
     std::vector<int> offset, order;
-    TrianglesByRegion(s, pass, int(proxies.size()), offset, order);
-    Box3d box;
-    for (const Point3d &p : s.positions) box.Add(p);
-    const std::vector<double> fit = RegionFit(s, proxies);
+    TrianglesByRegion(s, pass, int(fits.fit.size()), offset, order);
     const std::vector<char> inside = InsideRegion(s);
     std::vector<char> measured(s.VertexCount(), 0);
     const double exact = -std::numeric_limits<double>::infinity();
@@ -255,7 +252,7 @@ inline void MeasureStray(const MeshingSurface &s, const MeshingPass &pass, const
             if (!inside[v] || measured[v]) continue;
             measured[v] = 1;
             const double d = DistanceToTriangles(pass, order, offset[r], offset[r + 1], s.positions[v], exact, hint);
-            trial.stray[r] = std::max(trial.stray[r], d / (strayFactor * fit[r] + kStrayAllowance * box.Diag()));
+            trial.stray[r] = std::max(trial.stray[r], d / (strayFactor * fits.fit[r] + kStrayAllowance * fits.diagonal));
         }
     }
 }
@@ -339,8 +336,9 @@ RegionTrial TrialMeshRegions(TrialSetup<CoordType> &input, const Partition &part
     if (!AssignRegions(s, partition.faceRegion, regionCount, error)) return trial;
     const std::vector<Proxy> &proxies = input.proxies[slot] = UsableProxies(s, partition.proxies);
     const MeshingParam &once = input.once;
+    const RegionFits fits = MeasureRegionFits(s, proxies);
     input.latest = std::make_unique<CellMesher<CoordType>>(
-        s, proxies, ChordDeviationBound(s, proxies, once.chordErrorFactor), once, 0,
+        s, proxies, fits, once, 0,
         once.chordGapThreshold > 0 ? input.gapTest.get() : nullptr, input.intersections, input.passes, nullptr,
         input.latest ? std::optional<CellFlooding>(std::move(input.latest->Flooding())) : std::nullopt);
     input.latestSurface = slot;
@@ -350,7 +348,7 @@ RegionTrial TrialMeshRegions(TrialSetup<CoordType> &input, const Partition &part
 
     auto flag = [&](int region, RegionFault fault) { trial.fault[region] = std::max(trial.fault[region], fault); };
     if (param.strayFactor > 0) {
-        MeasureStray(s, pass, proxies, param.strayFactor, trial);
+        MeasureStray(s, pass, fits, param.strayFactor, trial);
         for (int r = 0; r < regionCount; ++r)
             if (trial.stray[r] > 1) flag(r, RegionFault::Strays);
     }

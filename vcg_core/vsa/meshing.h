@@ -61,13 +61,13 @@ public:
     using Mesher = CellMesher<CoordType>;
 
     /// `clearance`: SavedCoordinateClearance of the output's scalar. Halving changes cells only,
-    /// not faces or regions: the planes, the chord deviation bound and the gap test's grid of
+    /// not faces or regions: the planes, the regions' fits and the gap test's grid of
     /// the first surface serve every surface split from it.
     SurfaceMeshing(const IndexedMesh &in, std::shared_ptr<MeshingSurface> surface, const std::vector<Proxy> &given,
                    const MeshingParam &param, double clearance, MeshingReport &report, ProgressStage &progress)
         : param_(param), report_(report), progress_(progress), inputIntersections_(in), clearance_(clearance),
           surface_(std::move(surface)), proxies_(UsableProxies(*surface_, given)),
-          chordDeviationBound_(ChordDeviationBound(*surface_, proxies_, param.chordErrorFactor)),
+          fits_(MeasureRegionFits(*surface_, proxies_)),
           gapTest_(surface_->positions, surface_->faces, param.chordGapThreshold), bestSurface_(surface_)
     {
     }
@@ -184,7 +184,7 @@ private:
     double clearance_;  ///< output faces closer than this are repaired as if they met
     std::shared_ptr<MeshingSurface> surface_;  ///< the first surface: gapTest_ points into it
     std::vector<Proxy> proxies_;
-    double chordDeviationBound_;
+    RegionFits fits_;
     ChordGapTest gapTest_;
     std::shared_ptr<MeshingSurface> bestSurface_;
     std::unique_ptr<Mesher> best_;  ///< the mesher of bestSurface_
@@ -192,7 +192,7 @@ private:
     std::unique_ptr<Mesher> MesherOf(const MeshingSurface &cells, ProgressStage *progress,
                                      std::optional<CellFlooding> earlier)
     {
-        return std::make_unique<Mesher>(cells, proxies_, chordDeviationBound_, param_, clearance_,
+        return std::make_unique<Mesher>(cells, proxies_, fits_, param_, clearance_,
                                          param_.chordGapThreshold > 0 ? &gapTest_ : nullptr, inputIntersections_,
                                          report_.passes, progress, std::move(earlier));
     }

@@ -290,19 +290,20 @@ public:
         std::vector<char> requiredAnchors, pinnedAnchors;  ///< per surface vertex
     };
 
-    /// `proxies`: UsableProxies; `chordDeviationBound`: ChordDeviationBound; `clearance`:
+    /// `proxies`: UsableProxies; `fits`: MeasureRegionFits of them; `clearance`:
     /// SavedCoordinateClearance of the output's scalar; `gapTest`: on
     /// `s`'s faces, or nullptr to leave the gap test out (chordGapThreshold 0). All three depend
     /// on the regions only, not on how they are cut into cells. `earlier`: the floodings of the
     /// surface `s` was split from (halved or carved) or relabelled from, or of `s` itself, which
     /// its cells can update (see CellFlooding), or none.
-    CellMesher(const MeshingSurface &s, const std::vector<Proxy> &proxies, double chordDeviationBound,
+    CellMesher(const MeshingSurface &s, const std::vector<Proxy> &proxies, const RegionFits &fits,
                const MeshingParam &param, double clearance, ChordGapTest *gapTest,
                InputIntersections &inputIntersections, int &passes, ProgressStage *progress,
                std::optional<CellFlooding> earlier = std::nullopt)
         : s_(s), proxies_(proxies), param_(param), clearance_(clearance), inputIntersections_(inputIntersections),
           passes_(passes), progress_(progress),
-          subdivision_(s, proxies_, param.chordThreshold, chordDeviationBound, gapTest),
+          flatRegion_(FlatRegions(fits)),
+          subdivision_(s, proxies_, param.chordThreshold, ChordDeviationBound(fits, param.chordErrorFactor), gapTest),
           requiredAnchors_(s.VertexCount(), 0), pinnedAnchors_(s.VertexCount(), 0), inputCells_(s.CellCount(), 0),
           flooding_(earlier ? CellFlooding(s, std::move(*earlier)) : CellFlooding(s))
     {
@@ -380,6 +381,7 @@ private:
     InputIntersections &inputIntersections_;
     int &passes_;
     ProgressStage *progress_;  ///< the final meshing's, whose bar the passes move; else nullptr
+    std::vector<char> flatRegion_;  ///< per region, FlatRegions
     ChainSubdivision subdivision_;
     std::vector<char> requiredAnchors_, pinnedAnchors_, inputCells_;
     CellFlooding flooding_;
@@ -417,7 +419,7 @@ private:
     MeshingPass RunPass(const MeshingPass *previous)
     {
         ++passes_;
-        return RunMeshingPass<CoordType>(s_, proxies_, param_, subdivision_, requiredAnchors_, pinnedAnchors_,
+        return RunMeshingPass<CoordType>(s_, proxies_, flatRegion_, param_, subdivision_, requiredAnchors_, pinnedAnchors_,
                                          inputCells_, flooding_, previous);
     }
 };
