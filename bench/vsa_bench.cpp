@@ -3,8 +3,8 @@
 //   vsa-bench --mesh FILE --k N --metric l21|l2 --init random|farthest|hierarchical
 //             --iterations N --seed S [--target-error E] [--tolerance T] [--relaxations R]
 //             [--teleport 0|1] [--anchor-threshold A] [--chord-gap G] [--chord-error F]
-//             [--repair-rounds R] [--halving-rounds H] [--project-anchors 0|1] [--polygonal 0|1]
-//             [--out FILE] [--polygon-labels FILE]
+//             [--repair-rounds R] [--halving-rounds H] [--project-anchors 0|1] [--planar-polygons 0|1]
+//             [--polygonal 0|1] [--out FILE] [--polygon-labels FILE]
 // The tolerance defaults to 0 so that --iterations Lloyd iterations run (unless the partition
 // cycles), like CGAL's run(N): per-iteration timings compare. --out writes the approximating
 // mesh with each face coloured by its region (format from the extension: ply, off, obj).
@@ -83,6 +83,7 @@ std::string Parse(int argc, char **argv, Options &o)
             else if (arg == "--repair-rounds") o.meshing.repairRounds = std::stoi(value);
             else if (arg == "--halving-rounds") o.meshing.halvingRounds = std::stoi(value);
             else if (arg == "--project-anchors") o.meshing.projectAnchors = ParseFlag(value);
+            else if (arg == "--planar-polygons") o.meshing.planarPolygons = ParseFlag(value);
             else if (arg == "--polygonal") o.meshing.polygonal = ParseFlag(value);
             else if (arg == "--polygon-labels") o.polygonLabels = value;
             else if (arg == "--meshable") o.meshable.enabled = ParseFlag(value);

@@ -51,7 +51,9 @@ void DefineVsaParameters(RichParameterList &parameters, const CMeshO &mesh)
         "split while it strays farther than the regions do from their planes."));
     parameters.addParam(RichBool("ProjectAnchors", defaults.meshing.projectAnchors, "Project anchors on proxies",
         "Place each anchor at the average of its projections on the planes of the proxies around it "
-        "(as in the paper); when off, anchors keep the position of the original vertex."));
+        "(as in the paper; exactly on the planes of flat regions), then move anchors a little further "
+        "where that makes each region's polygon planar; when off, anchors keep the position of the "
+        "original vertex."));
     // On here, off in MeshingParam: a MeshLab layer always has face flags and users want one polygon
     // per region; a library caller's mesh type may have no flags (see docs/ARCHITECTURE.md).
     parameters.addParam(RichBool("Polygonal", true, "Polygonal output",

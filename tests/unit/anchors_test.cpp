@@ -14,6 +14,7 @@
 #include <functional>
 #include <limits>
 #include <numeric>
+#include <map>
 #include <set>
 #include <string>
 #include <vector>
@@ -47,6 +48,7 @@ TEST(Anchors, AnchorProjectionAveragesThePlanesAndIsCapped)
         return Point3d(0, 0, 0);
     };
     MeshingParam param;
+    param.planarPolygons = false;  // the three sides around the corner would then move it on to flatten them
     TMesh out;
     MeshingReport r = BuildApproximatingMesh(im, p, param, out);
     ASSERT_TRUE(r.ok);
@@ -96,4 +98,77 @@ TEST(Anchors, FlatRegionKeepsItsAnchorsOnItsPlane)
         }
     }
     EXPECT_GE(down, 1);
+}
+
+namespace {
+
+/// Per output face, its polygon: faces joined across faux edges (the polygonal output).
+std::vector<int> PolygonOfFace(const TMesh &out)
+{
+    std::vector<int> parent(out.FN());
+    std::iota(parent.begin(), parent.end(), 0);
+    const std::function<int(int)> root = [&](int f) { return parent[f] == f ? f : parent[f] = root(parent[f]); };
+    std::map<std::pair<int, int>, int> firstFace;
+    for (int f = 0; f < out.FN(); ++f)
+        for (int i = 0; i < 3; ++i) {
+            if (!out.face[f].IsF(i)) continue;
+            int a = int(vcg::tri::Index(out, out.face[f].cV(i))), b = int(vcg::tri::Index(out, out.face[f].cV((i + 1) % 3)));
+            const auto edge = std::minmax(a, b);
+            const auto found = firstFace.emplace(edge, f);
+            if (!found.second) parent[root(f)] = root(found.first->second);
+        }
+    std::vector<int> polygon(out.FN());
+    for (int f = 0; f < out.FN(); ++f) polygon[f] = root(f);
+    return polygon;
+}
+
+/// The largest angle, in degrees, between an output triangle and the area-weighted normal of
+/// its polygon: 0 when every polygon is planar.
+double LargestPolygonBend(const TMesh &out)
+{
+    const std::vector<int> polygon = PolygonOfFace(out);
+    std::vector<Point3d> areaNormal(out.FN(), Point3d(0, 0, 0));
+    for (int f = 0; f < out.FN(); ++f) areaNormal[polygon[f]] += Point3d::Construct(vcg::TriangleNormal(out.face[f]));
+    double largest = 0;
+    for (int f = 0; f < out.FN(); ++f) {
+        const Point3d n = Point3d::Construct(vcg::TriangleNormal(out.face[f])).Normalize();
+        const Point3d m = Point3d(areaNormal[polygon[f]]).Normalize();
+        largest = std::max(largest, vcg::math::ToDeg(vcg::Angle(n, m)));
+    }
+    return largest;
+}
+
+}  // namespace
+
+/// A box with a round hole at k = 24: the wall of the hole is cut into strips, and the paper's
+/// average lifts the anchors they share with the top and the bottom off the strips' planes,
+/// bending their polygons by a few degrees. Planarizing makes every polygon planar, keeps the
+/// top's and the bottom's anchors on their planes, and changes nothing else.
+TEST(Anchors, PlanarizingMakesEveryPolygonPlanar)
+{
+    TMesh box, bent, planar;
+    vsa_test::MakeBoxWithHole(box, 64);
+    ShapeApproximationParam param;
+    param.partition.proxyCount = 24;
+    param.meshing.polygonal = true;
+    param.meshing.planarPolygons = false;
+    const ShapeApproximationResult before = ApproximateShape(box, bent, param);
+    ASSERT_TRUE(before.ok) << before.error;
+    EXPECT_GT(LargestPolygonBend(bent), 2.0);
+
+    param.meshing.planarPolygons = true;
+    const ShapeApproximationResult after = ApproximateShape(box, planar, param);
+    ASSERT_TRUE(after.ok) << after.error;
+    EXPECT_LT(LargestPolygonBend(planar), 0.1);
+    EXPECT_EQ(after.partition.proxyCount, before.partition.proxyCount);
+    EXPECT_EQ(planar.FN(), bent.FN());
+    EXPECT_TRUE(after.meshing.validity.IsValid() && after.meshing.validity.IsClosed()) << after.meshing.Summary();
+    int onCaps = 0;
+    for (int v = 0; v < planar.VN(); ++v) {
+        const int source = after.meshing.vertexSource[v];
+        if (source < 0 || std::abs(std::abs(box.vert[source].cP()[2]) - 0.5f) > 1e-6f) continue;
+        ++onCaps;
+        EXPECT_NEAR(std::abs(planar.vert[v].cP()[2]), 0.5, 1e-6) << "output vertex " << v;
+    }
+    EXPECT_GE(onCaps, 8);
 }

@@ -197,14 +197,13 @@ TEST(MeshingRealMeshes, DefectsCarriedOverAreThoseFoundFromScratch)
     const std::vector<Proxy> proxies = detail::UsableProxies(s, partition.partition.proxies);
     const MeshingParam param;
     const detail::RegionFits fits = detail::MeasureRegionFits(s, proxies);
-    const std::vector<char> flat = detail::FlatRegions(fits);
     detail::ChainSubdivision subdivision(s, proxies, param.chordThreshold,
                                          detail::ChordDeviationBound(fits, param.chordErrorFactor));
     std::vector<char> required(s.VertexCount(), 0), pinned(s.VertexCount(), 0), inputCells(s.CellCount(), 0);
     CellFlooding flooding(s);
     using Pass = detail::MeshingPass;
     Pass pass =
-        detail::RunMeshingPass<vcg::Point3f>(s, proxies, flat, param, subdivision, required, pinned, inputCells, flooding);
+        detail::RunMeshingPass<vcg::Point3f>(s, proxies, fits, param, subdivision, required, pinned, inputCells, flooding);
     const double clearance = detail::SavedCoordinateClearance<float>(im.positions);
     detail::PassDefects defects = detail::FindDefects(pass, clearance);
     auto crossings = [](const detail::PassDefects &d) {
@@ -215,7 +214,7 @@ TEST(MeshingRealMeshes, DefectsCarriedOverAreThoseFoundFromScratch)
     size_t intersections = 0;
     for (int round = 1; round <= 6; ++round) {
         ASSERT_GT(detail::RespondToDefects(s, pass, defects, required, pinned), 0);
-        Pass next = detail::RunMeshingPass<vcg::Point3f>(s, proxies, flat, param, subdivision, required, pinned, inputCells,
+        Pass next = detail::RunMeshingPass<vcg::Point3f>(s, proxies, fits, param, subdivision, required, pinned, inputCells,
                                                          flooding, &pass);
         const detail::PassDefects carried = detail::FindDefects(next, clearance, &pass, &defects);
         const detail::PassDefects scratch = detail::FindDefects(next, clearance);

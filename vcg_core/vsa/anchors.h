@@ -6,6 +6,7 @@
 
 #include <vsa/chords.h>
 #include <vsa/meshing_surface.h>
+#include <vsa/planar_polygons.h>
 #include <vsa/proxy.h>
 #include <vsa/tuning.h>
 
@@ -260,14 +261,16 @@ inline Point3d MoveOntoFlatPlanes(const Point3d &p, const std::vector<int> &flat
 }  // namespace detail
 
 /// Where the anchors go. With `project`, each anchor moves onto the planes of the regions
-/// around it: exactly onto those of the regions flagged in `flatRegion` (see FlatRegions), so
+/// around it: exactly onto those of the flat regions (see FlatRegions; `fits`: MeasureRegionFits), so
 /// that their polygons stay planar, and to the average of its projections on the others (the
 /// paper; that average never blows up, even for near-parallel planes). On a strongly curved
 /// region a plane can be far from the vertex, so the move is capped at `maxMove` times the
 /// shortest chord at the anchor: an anchor never travels far enough to fold the output
 /// triangles around it. An anchor inside a single region (where cells of a region that is not
 /// a disc meet, away from the border) stays put: the cut is ours, not the partition's, and
-/// flattening it onto the one plane would flatten a closed region into a pancake. Without
+/// flattening it onto the one plane would flatten a closed region into a pancake. With
+/// `planar`, PlanarizePolygons then moves the anchors a little further where that makes
+/// their polygons planar (planar_polygons.h). Without
 /// `project`, anchors stay at their input vertices, and so do anchors on surface vertices
 /// flagged in `pinned` (empty, or one flag per vertex). An anchor whose move would take a
 /// coordinate beyond `largestCoordinate` (the largest the output's scalar holds) stays put too:
@@ -275,8 +278,8 @@ inline Point3d MoveOntoFlatPlanes(const Point3d &p, const std::vector<int> &flat
 /// as infinite.
 inline std::vector<Point3d> PlaceAnchors(const MeshingSurface &s, const AnchorSet &anchors,
                                          const std::vector<std::vector<int>> &polygons,
-                                         const std::vector<Proxy> &proxies, const std::vector<char> &flatRegion,
-                                         bool project, double maxMove, double largestCoordinate,
+                                         const std::vector<Proxy> &proxies, const detail::RegionFits &fits,
+                                         bool project, bool planar, double maxMove, double largestCoordinate,
                                          const std::vector<char> &pinned = {})
 {
     const int anchorCount = anchors.Count();
@@ -292,10 +295,15 @@ inline std::vector<Point3d> PlaceAnchors(const MeshingSurface &s, const AnchorSe
             shortestChord[a] = std::min(shortestChord[a], length);
             shortestChord[b] = std::min(shortestChord[b], length);
         }
+    const std::vector<char> flatRegion = detail::FlatRegions(fits);
     std::vector<int> regions, flat, curved;
+    std::vector<char> movable(anchorCount, 0);
+    std::vector<double> limit(anchorCount, 0);
     for (int a = 0; a < anchorCount; ++a) {
         const int v = anchors.vertexOfAnchor[a];
         if (!pinned.empty() && pinned[v]) continue;
+        movable[a] = 1;
+        limit[a] = maxMove * shortestChord[a];
         regions.clear();
         for (int k = s.vertexFaceOffset[v]; k < s.vertexFaceOffset[v + 1]; ++k)
             regions.push_back(s.faceRegion[s.vertexFaces[k]]);
@@ -308,12 +316,19 @@ inline std::vector<Point3d> PlaceAnchors(const MeshingSurface &s, const AnchorSe
         const Point3d &p = placed[a];
         Point3d move = flat.empty() ? detail::MoveToAverageProjection(p, regions, proxies)
                                     : detail::MoveOntoFlatPlanes(p, flat, curved, proxies);
-        const double limit = maxMove * shortestChord[a];
-        if (move.Norm() > limit) move *= limit / move.Norm();
+        if (move.Norm() > limit[a]) move *= limit[a] / move.Norm();
         const Point3d moved = p + move;
         if (std::abs(moved[0]) <= largestCoordinate && std::abs(moved[1]) <= largestCoordinate &&
             std::abs(moved[2]) <= largestCoordinate)
             placed[a] = moved;
+        else
+            movable[a] = 0;
+    }
+    if (planar) {
+        std::vector<Point3d> origin(anchorCount);
+        for (int a = 0; a < anchorCount; ++a) origin[a] = s.positions[anchors.vertexOfAnchor[a]];
+        detail::PlanarizePolygons({polygons, s.cellRegion, proxies, flatRegion, fits.fit, origin, limit, largestCoordinate},
+                                  std::move(movable), placed);
     }
     return placed;
 }

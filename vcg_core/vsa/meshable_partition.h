@@ -117,6 +117,9 @@ struct TrialSetup
     TrialSetup(const IndexedMesh &in, const MeshingParam &meshing) : intersections(in), once(meshing)
     {
         once.repairRounds = once.halvingRounds = 0;
+        // The trials judge the regions; planarizing moves anchors by a small part of their
+        // polygons' size, and only the final meshing's output needs it (docs/tuning.md).
+        once.planarPolygons = false;
         std::string error;
         surfaces[0] = std::make_shared<MeshingSurface>();
         meshable = BuildSurfaceTopology(in, *surfaces[0], error);

@@ -39,6 +39,9 @@ struct MeshingParam
     bool projectAnchors = true;
     /// Cap on that move, as a fraction of the shortest chord at the anchor.
     double maxAnchorMove = 0.5;
+    /// Then, where a few small moves make them planar, move the anchors so that each region's
+    /// polygon lies in one plane (see PlanarizePolygons); needs projectAnchors.
+    bool planarPolygons = true;
     /// Flag the edges inside a region faux (F0/F1/F2), so each region shows as one polygon
     /// (one per disc when the region had to be cut into discs). Off by default, as the output
     /// mesh type may have no face flags; the MeshLab plugin turns it on.

@@ -162,7 +162,7 @@ void KeepInputFaces(const MeshingSurface &s, int c, OutputRegistry &registry, Me
 /// will be written, since a triangle fine in double can be flat in a float mesh.
 template <class CoordType>
 MeshingPass RunMeshingPass(const MeshingSurface &s, const std::vector<Proxy> &proxies,
-                           const std::vector<char> &flatRegion, const MeshingParam &param,
+                           const RegionFits &fits, const MeshingParam &param,
                            ChainSubdivision &subdivision, const std::vector<char> &requiredAnchors,
                            const std::vector<char> &pinnedAnchors, const std::vector<char> &inputCells,
                            CellFlooding &flooding, const MeshingPass *previous = nullptr)
@@ -173,8 +173,8 @@ MeshingPass RunMeshingPass(const MeshingSurface &s, const std::vector<Proxy> &pr
     pass.polygons = CellPolygons(s, anchors);
     pass.polygonAt.resize(s.CellCount());
     for (int c = 0; c < s.CellCount(); ++c) pass.polygonAt[c] = AnchorPositionsInLoop(s, c, anchors);
-    pass.positions = PlaceAnchors(s, anchors, pass.polygons, proxies, flatRegion, param.projectAnchors,
-                                  param.maxAnchorMove,
+    pass.positions = PlaceAnchors(s, anchors, pass.polygons, proxies, fits, param.projectAnchors,
+                                  param.planarPolygons, param.maxAnchorMove,
                                   double(std::numeric_limits<typename CoordType::ScalarType>::max()), pinnedAnchors);
     for (int v : anchors.vertexOfAnchor) pass.pinnedAnchors += pinnedAnchors[v];
     for (Point3d &p : pass.positions) p = AsWritten<CoordType>(p);

@@ -302,7 +302,7 @@ public:
                std::optional<CellFlooding> earlier = std::nullopt)
         : s_(s), proxies_(proxies), param_(param), clearance_(clearance), inputIntersections_(inputIntersections),
           passes_(passes), progress_(progress),
-          flatRegion_(FlatRegions(fits)),
+          fits_(fits),
           subdivision_(s, proxies_, param.chordThreshold, ChordDeviationBound(fits, param.chordErrorFactor), gapTest),
           requiredAnchors_(s.VertexCount(), 0), pinnedAnchors_(s.VertexCount(), 0), inputCells_(s.CellCount(), 0),
           flooding_(earlier ? CellFlooding(s, std::move(*earlier)) : CellFlooding(s))
@@ -381,7 +381,7 @@ private:
     InputIntersections &inputIntersections_;
     int &passes_;
     ProgressStage *progress_;  ///< the final meshing's, whose bar the passes move; else nullptr
-    std::vector<char> flatRegion_;  ///< per region, FlatRegions
+    RegionFits fits_;
     ChainSubdivision subdivision_;
     std::vector<char> requiredAnchors_, pinnedAnchors_, inputCells_;
     CellFlooding flooding_;
@@ -419,7 +419,7 @@ private:
     MeshingPass RunPass(const MeshingPass *previous)
     {
         ++passes_;
-        return RunMeshingPass<CoordType>(s_, proxies_, flatRegion_, param_, subdivision_, requiredAnchors_, pinnedAnchors_,
+        return RunMeshingPass<CoordType>(s_, proxies_, fits_, param_, subdivision_, requiredAnchors_, pinnedAnchors_,
                                          inputCells_, flooding_, previous);
     }
 };

@@ -43,9 +43,17 @@ constexpr double kHalvingPasses = 4;      ///< a halving round meshes the whole 
 constexpr double kFirstPassItems = 8;     ///< per surface face: the first pass's anchors, chords and cell floodings (a repair pass ticks once)
 constexpr double kCheckItems = 20;        ///< per output face: indexing the written mesh, then checking it
 
-// Anchors (anchors.h).
+// Anchors (anchors.h, planar_polygons.h).
 constexpr double kFlatRegion = 1e-5;       ///< of the diagonal: a region this close to its plane is flat, far above float rounding
 constexpr double kPlaneConstraint = 1e-3;  ///< flat planes within 2.6 degrees of parallel do not fix a point between them
+constexpr double kPlanarizeReach = 0.03;   ///< a polygon bent more than this for its size needs moves that change the shape: left as placed
+constexpr double kPlanarPolygon = 3e-3;    ///< anchors within this of their polygon's plane, for its size: under 0.5 degree of bend but on slivers
+constexpr double kPlanarizeShift = 0.2;    ///< of an anchor's cap, the most planarizing moves it: further slid a thin plate's anchors across its thickness
+constexpr double kPlanarizeFit = 1;        ///< times its regions' fit, the most planarizing moves an anchor: further raised the Hausdorff distance at large k
+constexpr int kPlanarizeRounds = 20;       ///< plane fits and anchor moves per attempt: 60 or 300 made no more polygons planar
+constexpr double kPlanarizeSpring = 1e-2;  ///< an anchor's pull toward its placement, against a plane's 1: it holds only free directions
+constexpr double kPlanarizeSettled = 1e-6; ///< of an anchor's cap: a round that moves none further has converged
+constexpr int kPlanarizeAttempts = 8;      ///< polygons left bent free their neighbours this many times before all moves are undone: CAD parts needed up to 6
 
 // Chords and cells (chords.h, cell_triangulation.h).
 constexpr int kChordGapSamples = 8;  ///< points the gap test tries along a chord: it strays over a hole, not a point
