@@ -1,6 +1,7 @@
 // Tests of vsa/anchors.h.
 #include "meshing_fixtures.h"
 #include "meshing_test_util.h"
+#include "output_quality.h"  // bench/: the benchmarks' polygons of an output
 #include "test_meshes.h"
 
 #include <vsa/anchors.h>
@@ -14,7 +15,6 @@
 #include <functional>
 #include <limits>
 #include <numeric>
-#include <map>
 #include <set>
 #include <string>
 #include <vector>
@@ -102,31 +102,11 @@ TEST(Anchors, FlatRegionKeepsItsAnchorsOnItsPlane)
 
 namespace {
 
-/// Per output face, its polygon: faces joined across faux edges (the polygonal output).
-std::vector<int> PolygonOfFace(const TMesh &out)
-{
-    std::vector<int> parent(out.FN());
-    std::iota(parent.begin(), parent.end(), 0);
-    const std::function<int(int)> root = [&](int f) { return parent[f] == f ? f : parent[f] = root(parent[f]); };
-    std::map<std::pair<int, int>, int> firstFace;
-    for (int f = 0; f < out.FN(); ++f)
-        for (int i = 0; i < 3; ++i) {
-            if (!out.face[f].IsF(i)) continue;
-            int a = int(vcg::tri::Index(out, out.face[f].cV(i))), b = int(vcg::tri::Index(out, out.face[f].cV((i + 1) % 3)));
-            const auto edge = std::minmax(a, b);
-            const auto found = firstFace.emplace(edge, f);
-            if (!found.second) parent[root(f)] = root(found.first->second);
-        }
-    std::vector<int> polygon(out.FN());
-    for (int f = 0; f < out.FN(); ++f) polygon[f] = root(f);
-    return polygon;
-}
-
 /// The largest angle, in degrees, between an output triangle and the area-weighted normal of
-/// its polygon: 0 when every polygon is planar.
+/// its polygon (faces joined across faux edges): 0 when every polygon is planar.
 double LargestPolygonBend(const TMesh &out)
 {
-    const std::vector<int> polygon = PolygonOfFace(out);
+    const std::vector<int> polygon = vsa_bench::LabelPolygons(out).faceLabel;
     std::vector<Point3d> areaNormal(out.FN(), Point3d(0, 0, 0));
     for (int f = 0; f < out.FN(); ++f) areaNormal[polygon[f]] += Point3d::Construct(vcg::TriangleNormal(out.face[f]));
     double largest = 0;

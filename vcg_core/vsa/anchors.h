@@ -236,7 +236,7 @@ inline Point3d MoveOntoFlatPlanes(const Point3d &p, const std::vector<int> &flat
     Eigen::Matrix3d normals = Eigen::Matrix3d::Zero();
     Eigen::Vector3d pull = Eigen::Vector3d::Zero();
     for (int r : flat) {
-        const Eigen::Vector3d n(proxies[r].normal[0], proxies[r].normal[1], proxies[r].normal[2]);
+        const Eigen::Vector3d n = AsEigen(proxies[r].normal);
         normals += n * n.transpose();
         pull += n * ((proxies[r].point - p) * proxies[r].normal);
     }
@@ -252,7 +252,7 @@ inline Point3d MoveOntoFlatPlanes(const Point3d &p, const std::vector<int> &flat
     if (!curved.empty()) {
         const Point3d average = MoveToAverageProjection(p + Point3d(move[0], move[1], move[2]), curved, proxies) *
                                 (double(curved.size()) / double(curved.size() + flat.size()));
-        const Eigen::Vector3d towardCurved(average[0], average[1], average[2]);
+        const Eigen::Vector3d towardCurved = AsEigen(average);
         for (const Eigen::Vector3d &axis : free) move += axis * axis.dot(towardCurved);
     }
     return Point3d(move[0], move[1], move[2]);
