@@ -59,8 +59,9 @@ TEST(MeshablePartition, CubeKeepsItsSixSidesAndK)
 
 /// A box with a hole at k=4: two of its regions are rings (the top or the bottom with walls),
 /// which no single polygon can be. Given room (k' up to 16), they are split until every region
-/// is a disc (three rounds of two splits: k' = 10), the log says from which k to which and why,
-/// and the meshing has no region left to cut; with the stage off, k stays and the rings are cut.
+/// is a disc (three rounds of two splits, one of them of a piece that faced away: k' = 10), the
+/// log says from which k to which and why, and the meshing has no region left to cut; with the
+/// stage off, k stays and the rings are cut.
 TEST(MeshablePartition, RingRegionsAreSplitAndKRaisedIsReported)
 {
     TMesh box;
@@ -79,7 +80,8 @@ TEST(MeshablePartition, RingRegionsAreSplitAndKRaisedIsReported)
     EXPECT_EQ(r.meshable.rounds, 3);
     EXPECT_EQ(r.meshable.regionsLeft, 0);
     EXPECT_EQ(r.partition.proxyCount, 10);
-    EXPECT_EQ(r.meshable.splits[int(RegionFault::NotDisc)], 6);
+    EXPECT_EQ(r.meshable.splits[int(RegionFault::NotDisc)], 5) << r.meshable.Summary();
+    EXPECT_EQ(r.meshable.splits[int(RegionFault::FacesAway)], 1) << r.meshable.Summary();
     EXPECT_EQ(r.meshing.regionsCut, 0);
     EXPECT_TRUE(r.meshing.validity.IsValid()) << r.meshing.validity.Summary();
     const std::string says = "k raised from 4 to " + std::to_string(r.meshable.proxiesFinal) + ":";

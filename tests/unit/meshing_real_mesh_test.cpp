@@ -148,10 +148,10 @@ TEST(MeshingRealMeshes, InputFacesFinishWhatHalvingLeaves)
 
 TEST(MeshingRealMeshes, InputFacesOnlyWithinTheFaceBudget)
 {
-    // Turbine at k=50 needs more than twice the faces to lose its intersections: by default it
+    // Turbine at k=20 needs more than twice the faces to lose its intersections: by default it
     // keeps them (reported), unbounded it has none.
     // (Halving cells, the step before, would remove them too.)
-    const SweepCase c{"turbine.off", 50, SeedingMethod::Hierarchical};
+    const SweepCase c{"turbine.off", 20, SeedingMethod::Hierarchical};
     MeshingParam byDefault;
     byDefault.halvingRounds = 0;
     MeshingReport bounded, unbounded;
@@ -164,9 +164,9 @@ TEST(MeshingRealMeshes, InputFacesOnlyWithinTheFaceBudget)
     EXPECT_GT(bounded.validity.selfIntersections, 0);
     EXPECT_LT(bounded.validity.faces, unbounded.validity.faces);
     // The passes are reported. Here the repair diverges: it stops kRepairPatience rounds after
-    // its best pass (pass 4), the last with at least twice its defects, short of repairRounds
-    // (the output is the same as with all of them); keeping input faces takes one more pass.
-    EXPECT_EQ(bounded.outputRepairRound, 3);
+    // its best pass (repair round 2), short of repairRounds (the output is the same as with
+    // all of them); keeping input faces takes one more pass.
+    EXPECT_EQ(bounded.outputRepairRound, 2);
     EXPECT_EQ(bounded.passes, bounded.outputRepairRound + 1 + detail::kRepairPatience);
     EXPECT_LT(bounded.passes, 1 + MeshingParam().repairRounds);
     EXPECT_EQ(unbounded.passes, bounded.passes + 1);
@@ -280,16 +280,16 @@ TEST(MeshingRealMeshes, HalvingCellsRemovesIntersectionsThatAnchorsCannot)
 
 TEST(MeshingRealMeshes, HalvingGivesUpEarlyOnlyWhereTheInputIntersectsItself)
 {
-    // Dino at k=20 is a clean input whose first halving rounds add intersecting pairs before later
-    // ones remove them all (see kHalvingPatience; giving up early leaves 48 pairs here): halving
-    // must go on until none is left. "man" intersects itself (848 pairs) near the pairs its output
-    // keeps at k=20: after detail::kHalvingPatience rounds without fewer pairs, halving stops.
+    // Dino at k=20 is a clean input that takes several halving rounds to lose every intersecting
+    // pair: halving must go on until none is left. "man" intersects itself (848 pairs) near the
+    // pairs its output keeps at k=20: after detail::kHalvingPatience rounds without fewer pairs,
+    // halving stops.
     MeshingReport clean, intersecting;
     CheckCase({"dino.off", 20, SeedingMethod::Farthest}, false, MeshingParam(), &clean);
     EXPECT_EQ(clean.validity.selfIntersections, 0);
     EXPECT_GE(clean.outputHalvingRound, 3);
     EXPECT_EQ(clean.halvingRoundsRun, clean.outputHalvingRound);
-    CheckCase({"man.off", 20, SeedingMethod::Random}, false, MeshingParam(), &intersecting);
+    CheckCase({"man.off", 20, SeedingMethod::Farthest}, false, MeshingParam(), &intersecting);
     EXPECT_GT(intersecting.validity.selfIntersections, 0);
     EXPECT_LT(intersecting.outputHalvingRound + detail::kHalvingPatience, MeshingParam().halvingRounds);
     EXPECT_EQ(intersecting.halvingRoundsRun, intersecting.outputHalvingRound + detail::kHalvingPatience);
@@ -298,15 +298,14 @@ TEST(MeshingRealMeshes, HalvingGivesUpEarlyOnlyWhereTheInputIntersectsItself)
 TEST(MeshingRealMeshes, InputFacesStartFromTheAnchorsOfTheBestPass)
 {
     // Two clean inputs, partitioned as the benchmark does under the L2 metric, where halving
-    // leaves a few pairs and the repair passes after the best one only add pairs (dino at k=50:
-    // 4 pairs, then 16 to 37). Keeping input faces must start from the best pass as it was, not
-    // with the anchors those later passes added and pinned: then it removes every pair (from
-    // those anchors it made 25 pairs, and the next pass went over the face budget).
+    // leaves a few pairs that only keeping input faces removes. Keeping input faces must start
+    // from the best pass as it was, not with the anchors the later repair passes added and
+    // pinned: then it removes every pair.
     ApproximationParam asBenchmarked;
     asBenchmarked.metric = MetricKind::L2;
     asBenchmarked.tolerance = 0;
     asBenchmarked.randomSeed = 1;
-    for (const SweepCase &c : {SweepCase{"dino.off", 50, SeedingMethod::Random},
+    for (const SweepCase &c : {SweepCase{"turbine.off", 50, SeedingMethod::Random},
                                SweepCase{"turbine.off", 20, SeedingMethod::Hierarchical}}) {
         IndexedMesh im;
         ApproximationResult partition;
@@ -325,27 +324,28 @@ TEST(MeshingRealMeshes, InputFacesStartFromTheAnchorsOfTheBestPass)
 
 TEST(MeshingRealMeshes, CarvedPiecesFinishWhereWholeCellsCannot)
 {
-    // Two clean inputs, under dialog settings where halving leaves a few intersecting pairs and
-    // keeping the cells concerned as input faces cannot remove them: refined_elephant at k=20
-    // with teleportation off (2 pairs; those cells would make 2515 faces, over the budget of
-    // 1300), and homer at k=50 after one Lloyd iteration (3 pairs; keeping the cells made 9, and
-    // the next pass broke the budget). Pieces carved out of those cells remove every pair.
+    // Two clean inputs, partitioned as the benchmark does under the L2 metric, where halving
+    // leaves a few intersecting pairs, under face budgets that keeping the cells concerned as
+    // input faces would break: turbine at k=20 (2 pairs; those cells make 1732 faces, over the
+    // budget of 1.1 times the output) and homer at k=20 (2 pairs; over 1.3 times). Pieces carved
+    // out of those cells remove every pair within the budget.
     struct CarvingCase
     {
         SweepCase sweep;
-        ApproximationParam partition;
+        double maxInputFacesGrowth;
     };
-    ApproximationParam noTeleport, oneIteration;
-    noTeleport.teleport = false;
-    oneIteration.maxIterations = 1;
-    for (ApproximationParam *ap : {&noTeleport, &oneIteration}) {  // as benchmarked
-        ap->tolerance = 0;
-        ap->randomSeed = 1;
-    }
-    for (const CarvingCase &c : {CarvingCase{{"refined_elephant.off", 20, SeedingMethod::Random}, noTeleport},
-                                 CarvingCase{{"homer.off", 50, SeedingMethod::Hierarchical}, oneIteration}}) {
+    ApproximationParam asBenchmarked;
+    asBenchmarked.metric = MetricKind::L2;
+    asBenchmarked.tolerance = 0;
+    asBenchmarked.randomSeed = 1;
+    for (const CarvingCase &c : {CarvingCase{{"turbine.off", 20, SeedingMethod::Hierarchical}, 1.1},
+                                 CarvingCase{{"homer.off", 20, SeedingMethod::Hierarchical}, 1.3}}) {
+        MeshingParam budget;
+        budget.maxInputFacesGrowth = c.maxInputFacesGrowth;
         MeshingReport r;
-        CheckCase(c.sweep, false, MeshingParam(), &r, nullptr, c.partition);
+        CheckCase(c.sweep, false, budget, &r, nullptr, asBenchmarked);
+        EXPECT_GT(r.outputHalvingRound, 0) << c.sweep.mesh;
+        EXPECT_EQ(r.regionsKeptAsInput, 0) << c.sweep.mesh;
         EXPECT_GT(r.outputCarvingRound, 0) << c.sweep.mesh;
         EXPECT_LE(r.outputCarvingRound, detail::kCarvingRounds) << c.sweep.mesh;
         EXPECT_GE(r.piecesCarved, r.outputCarvingRound) << c.sweep.mesh;

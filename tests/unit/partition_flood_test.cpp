@@ -1,5 +1,5 @@
-// The flood: its queue pops by rank, first in first out, and its labels are those of the flood
-// that queues every candidate.
+// The flood: its buckets hand candidates out by rank, and its labels are those of the flood that
+// queues every candidate, on any number of threads.
 #include "partition_test_helpers.h"
 
 #include <vsa/face_geometry.h>
@@ -18,33 +18,43 @@ using vcg::Point3d;
 
 namespace {
 
-using Key = std::tuple<FloodQueue::Rank, long, int, int>;  // (rank, push order, face, region)
+using Key = std::tuple<FloodRanks::Rank, long, int, int>;  // (rank, wave, region, face)
 using ReferenceQueue = std::priority_queue<Key, std::vector<Key>, std::greater<Key>>;
 
-/// The paper's flood with a std::priority_queue and no shortcut: every neighbour is queued,
-/// keyed by the rank of its error and then by when it was queued.
+/// The flood with a std::priority_queue and no shortcut: every free neighbour is queued, keyed
+/// by the rank of its error, then by its wave within that rank (the next wave's when it ranks
+/// at or below the current rank); all candidates of the lowest key are popped together and a
+/// free face goes to the lowest region among them.
 template <class Metric>
 std::vector<int> TextbookFlood(const IndexedMesh &mesh, const Metric &metric, const std::vector<Proxy> &proxies,
                                const std::vector<int> &seeds)
 {
-    FloodQueue ranks;
+    FloodRanks ranks;
     ranks.Reset(metric.ErrorScale());
     std::vector<int> label(mesh.FaceCount(), -1);
     ReferenceQueue queue;
-    long pushes = 0;
-    const auto offer = [&](int face, int region) {
-        if (face >= 0 && label[face] < 0)
-            queue.emplace(ranks.RankOf(metric.Error(face, proxies[region])), pushes++, face, region);
+    const auto offer = [&](int face, int region, FloodRanks::Rank current, long wave) {
+        if (face < 0 || label[face] >= 0) return;
+        const FloodRanks::Rank rank = ranks.RankOf(metric.Error(face, proxies[region]));
+        if (rank <= current) queue.emplace(current, wave + 1, region, face);
+        else queue.emplace(rank, 0, region, face);
     };
     for (int r = 0; r < int(seeds.size()); ++r) label[seeds[r]] = r;
     for (int r = 0; r < int(seeds.size()); ++r)
-        for (int g : mesh.neighbors[seeds[r]]) offer(g, r);
+        for (int g : mesh.neighbors[seeds[r]]) offer(g, r, 0, -1);
     while (!queue.empty()) {
-        const auto [rank, order, face, region] = queue.top();
-        queue.pop();
-        if (label[face] >= 0) continue;
-        label[face] = region;
-        for (int g : mesh.neighbors[face]) offer(g, region);
+        const FloodRanks::Rank rank = std::get<0>(queue.top());
+        const long wave = std::get<1>(queue.top());
+        std::vector<int> labelled;
+        while (!queue.empty() && std::get<0>(queue.top()) == rank && std::get<1>(queue.top()) == wave) {
+            const auto [r, t, region, face] = queue.top();  // by region: the lowest comes first
+            queue.pop();
+            if (label[face] >= 0) continue;
+            label[face] = region;
+            labelled.push_back(face);
+        }
+        for (int f : labelled)
+            for (int g : mesh.neighbors[f]) offer(g, label[f], rank, wave);
     }
     return label;
 }
@@ -78,15 +88,15 @@ void ForBothMetrics(const IndexedMesh &im, Check check)
 
 TEST(PartitionFlood, RanksFollowTheErrorsToTwoPercent)
 {
-    FloodQueue queue;
+    FloodRanks queue;
     const double scale = 3.5;
     queue.Reset(scale);
     EXPECT_EQ(queue.RankOf(0.0), 0u);
     EXPECT_EQ(queue.RankOf(-0.0), 0u);
     EXPECT_EQ(queue.RankOf(1e-300), 0u);
-    EXPECT_EQ(queue.RankOf(2 * scale), FloodQueue::kRanks - 1);
-    EXPECT_EQ(queue.RankOf(1e300), FloodQueue::kRanks - 1);
-    EXPECT_EQ(queue.RankOf(std::numeric_limits<double>::infinity()), FloodQueue::kRanks - 1);
+    EXPECT_EQ(queue.RankOf(2 * scale), FloodRanks::kRanks - 1);
+    EXPECT_EQ(queue.RankOf(1e300), FloodRanks::kRanks - 1);
+    EXPECT_EQ(queue.RankOf(std::numeric_limits<double>::infinity()), FloodRanks::kRanks - 1);
     vsa_test::TestRandom random(5);
     for (int i = 0; i < 10000; ++i) {
         // Over the whole range the queue ranks: from the scale down 60 binades.
@@ -98,69 +108,81 @@ TEST(PartitionFlood, RanksFollowTheErrorsToTwoPercent)
     }
 }
 
-TEST(PartitionFlood, QueuePopsByRankFirstInFirstOut)
+TEST(PartitionFlood, BucketsHandOutTheLowestRankInPushOrder)
 {
-    // Rising errors with dips below the last pop, exact ties, zeros and many binades: what
-    // floods produce. Same rank: the earlier push first.
+    // Ranks pushed at random awave a level that moves, as floods push them; every MoveOut of the
+    // lowest rank gives that rank's candidates in push order.
     vsa_test::TestRandom random(3);
-    FloodQueue queue;
-    queue.Reset(2.0);
-    ReferenceQueue reference;
-    double level = 0;
-    long pushes = 0;
-    int pops = 0;
+    RankBuckets buckets;
+    std::vector<std::vector<std::pair<int, int>>> reference(FloodRanks::kRanks);
+    FloodRanks::Rank level = 0;
+    int moves = 0;
     for (int step = 0; step < 20000; ++step) {
-        if (random.Uniform() < 0.55 || reference.empty()) {
+        if (random.Uniform() < 0.8) {
             const double u = random.Uniform();
-            double error = u < 0.1   ? 0.0
-                           : u < 0.3 ? level
-                           : u < 0.5 ? level * random.Uniform()
-                                     : level + random.Uniform();
-            if (u > 0.9) error = std::ldexp(random.Uniform(), -int(60 * random.Uniform()));  // tiny, many binades
+            const FloodRanks::Rank rank =
+                u < 0.1 ? 0 : std::min<FloodRanks::Rank>(FloodRanks::kRanks - 1, level + FloodRanks::Rank(200 * u));
             const int face = int(random.Uniform() * 50), region = int(random.Uniform() * 5);
-            const FloodQueue::Rank rank = queue.RankOf(error);
-            queue.Push(rank, {face, region});
-            reference.emplace(rank, pushes++, face, region);
-        } else {
-            const FloodQueue::Candidate c = queue.Pop();
-            const auto [rank, order, face, region] = reference.top();
-            reference.pop();
-            ASSERT_EQ(std::make_pair(c.face, c.region), std::make_pair(face, region)) << "at pop " << pops;
-            level = std::ldexp(1.0, -int(rank % 7));  // any level: the next pushes spread around it
-            ++pops;
+            buckets.Push(rank, {face, region});
+            reference[rank].emplace_back(face, region);
+        } else if (!buckets.Empty()) {
+            const FloodRanks::Rank lowest = buckets.Lowest();
+            FloodRanks::Rank expected = 0;
+            while (reference[expected].empty()) ++expected;
+            ASSERT_EQ(lowest, expected);
+            std::vector<FloodCandidate> out = {{-1, -1}};  // appended after what is there
+            buckets.MoveOut(lowest, out);
+            ASSERT_EQ(out.size(), reference[lowest].size() + 1);
+            for (size_t i = 0; i < reference[lowest].size(); ++i)
+                ASSERT_EQ(std::make_pair(out[i + 1].face, out[i + 1].region), reference[lowest][i]);
+            reference[lowest].clear();
+            level = lowest;
+            ++moves;
         }
-        ASSERT_EQ(queue.Empty(), reference.empty());
+        bool empty = true;
+        for (const auto &r : reference) empty = empty && r.empty();
+        ASSERT_EQ(buckets.Empty(), empty);
     }
-    EXPECT_GT(pops, 5000);
+    EXPECT_GT(moves, 1000);
 }
 
-TEST(PartitionFlood, ResetEmptiesAQueueLeftWithCandidates)
+TEST(PartitionFlood, ClearForgetsCandidatesLeftBehind)
 {
     // A flood that stopped early leaves candidates behind; the next flood must not see them.
-    FloodQueue queue;
-    queue.Reset(1.0);
-    for (int i = 0; i < 100; ++i) queue.Push(queue.RankOf(0.01 * i), {i, 0});
-    for (int i = 0; i < 10; ++i) queue.Pop();
-    queue.Reset(1.0);
-    EXPECT_TRUE(queue.Empty());
-    queue.Push(queue.RankOf(0.5), {7, 1});
-    queue.Push(queue.RankOf(0.5), {8, 2});
-    const FloodQueue::Candidate first = queue.Pop(), second = queue.Pop();
-    EXPECT_EQ(std::make_pair(first.face, first.region), std::make_pair(7, 1));
-    EXPECT_EQ(std::make_pair(second.face, second.region), std::make_pair(8, 2));
-    EXPECT_TRUE(queue.Empty());
+    FloodRanks ranks;
+    ranks.Reset(1.0);
+    RankBuckets buckets;
+    for (int i = 0; i < 100; ++i) buckets.Push(ranks.RankOf(0.01 * i), {i, 0});
+    buckets.Clear();
+    EXPECT_TRUE(buckets.Empty());
+    EXPECT_EQ(buckets.Lowest(), FloodRanks::kNoRank);
+    buckets.Push(ranks.RankOf(0.5), {7, 1});
+    buckets.Push(ranks.RankOf(0.5), {8, 2});
+    std::vector<FloodCandidate> out;
+    buckets.MoveOut(ranks.RankOf(0.5), out);
+    ASSERT_EQ(out.size(), 2u);
+    EXPECT_EQ(std::make_pair(out[0].face, out[0].region), std::make_pair(7, 1));
+    EXPECT_EQ(std::make_pair(out[1].face, out[1].region), std::make_pair(8, 2));
+    EXPECT_TRUE(buckets.Empty());
 }
 
 TEST(PartitionFlood, LabelsAreTheTextbookFloodsOnARealMesh)
 {
+    // On one thread, and with every wave shared by 2 and 3 threads.
     const IndexedMesh im = vsa_test::LoadCgalMesh("fandisk.off");
     ForBothMetrics(im, [&](const auto &metric, const FaceGeometry &g, bool) {
         const RegionState s = SeededState(im, metric, g, 60, 11);
-        std::vector<int> label(im.FaceCount(), -1);
-        PartitionWorkspace<std::decay_t<decltype(metric)>> ws;
-        EXPECT_EQ(FloodRegions(im, metric, s.partition.proxies, s.seeds, label, ws), 0);
-        EXPECT_EQ(label, TextbookFlood(im, metric, s.partition.proxies, s.seeds));
-        EXPECT_EQ(vsa_test::CheckPartition(im, label, 60), "");
+        const std::vector<int> textbook = TextbookFlood(im, metric, s.partition.proxies, s.seeds);
+        EXPECT_EQ(vsa_test::CheckPartition(im, textbook, 60), "");
+        for (int threads : {1, 2, 3}) {
+            std::vector<int> label(im.FaceCount(), -1);
+            PartitionWorkspace<std::decay_t<decltype(metric)>> ws;
+            const int unreached = vsa_test::WithThreads(threads, [&] {
+                return FloodRegions(im, metric, s.partition.proxies, s.seeds, label, ws);
+            });
+            EXPECT_EQ(unreached, 0) << threads << " threads";
+            EXPECT_EQ(label, textbook) << threads << " threads";
+        }
     });
 }
 

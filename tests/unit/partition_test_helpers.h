@@ -6,6 +6,7 @@
 
 #include <vsa/approximation.h>
 #include <vsa/indexed_mesh.h>
+#include <vsa/parallel.h>
 #include <vsa/proxy.h>
 #include <vsa/seeding.h>
 
@@ -15,7 +16,37 @@
 #include <string>
 #include <vector>
 
+#ifdef _OPENMP
+#include <omp.h>
+#endif
+
 namespace vsa_test {
+
+/// Flood waves that WithThreads sends to the threads: enough of them on the test meshes to
+/// check the threads' labels, few enough to keep 8 threads on 2 cores quick.
+constexpr size_t kTestMinWave = 64;
+
+/// Runs `f` with at most `threads` threads, every pass of two chunks or more and every flood
+/// wave of kTestMinWave candidates or more in parallel (test meshes are below kParallelMinItems
+/// and kParallelMinWave), then restores the defaults.
+template <class F>
+auto WithThreads(int threads, F &&f)
+{
+    vcg::tri::vsa::detail::ParallelMinItems() = 0;
+    vcg::tri::vsa::detail::ParallelMinWave() = kTestMinWave;
+#ifdef _OPENMP
+    const int before = omp_get_max_threads();
+    omp_set_num_threads(threads);
+    auto result = f();
+    omp_set_num_threads(before);
+#else
+    (void)threads;
+    auto result = f();
+#endif
+    vcg::tri::vsa::detail::ParallelMinItems() = vcg::tri::vsa::kParallelMinItems;
+    vcg::tri::vsa::detail::ParallelMinWave() = vcg::tri::vsa::kParallelMinWave;
+    return result;
+}
 
 /// An n x n grid of quads (2 n^2 triangles) spanning origin + [0,1] u + [0,1] v: an open
 /// planar patch with a border, oriented along u x v.

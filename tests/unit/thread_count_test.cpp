@@ -15,35 +15,13 @@
 #include <string>
 #include <vector>
 
-#ifdef _OPENMP
-#include <omp.h>
-#endif
-
 namespace {
 
 using namespace vcg::tri::vsa;
 using vsa_test::TMesh;
+using vsa_test::WithThreads;
 
 const int kThreadCounts[] = {1, 2, 3, 8};
-
-/// Runs `f` with at most `threads` threads, every pass of two chunks or more in parallel (the
-/// meshes here are below kParallelMinItems), then restores the defaults.
-template <class F>
-auto WithThreads(int threads, F &&f)
-{
-    detail::ParallelMinItems() = 0;
-#ifdef _OPENMP
-    const int before = omp_get_max_threads();
-    omp_set_num_threads(threads);
-    auto result = f();
-    omp_set_num_threads(before);
-#else
-    (void)threads;
-    auto result = f();
-#endif
-    detail::ParallelMinItems() = kParallelMinItems;
-    return result;
-}
 
 /// The bytes of a vector of plain values: equal bytes, equal doubles bit for bit (even NaNs).
 template <class T>

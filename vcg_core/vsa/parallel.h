@@ -30,12 +30,23 @@ constexpr int kChunkItems = 4096;
 /// slice (milliseconds), so only passes of that much work gain (measured in bench/README.md).
 constexpr size_t kParallelMinItems = size_t(1) << 17;
 
+/// Fewest candidates for which a wave of the flood (partition.h) wakes the other threads: a
+/// flood runs thousands of waves, and a wave this large is a fraction of a millisecond of work.
+constexpr size_t kParallelMinWave = 2048;
+
 namespace detail {
 /// kParallelMinItems, or what tests set to send small meshes down the parallel path.
 inline size_t &ParallelMinItems()
 {
     static size_t minItems = kParallelMinItems;
     return minItems;
+}
+
+/// kParallelMinWave, or what tests set to send the waves of small floods to the threads.
+inline size_t &ParallelMinWave()
+{
+    static size_t minWave = kParallelMinWave;
+    return minWave;
 }
 }  // namespace detail
 

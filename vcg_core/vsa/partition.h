@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <array>
+#include <chrono>
 #include <cstdint>
 #include <cstring>
 #include <limits>
@@ -40,37 +41,24 @@ struct RegionState
     double Energy() const { return std::accumulate(regionEnergy.begin(), regionEnergy.end(), 0.0); }
 };
 
-/// The flood's priority queue. A candidate's priority is its error rounded down to 7 significant
-/// bits (its rank): errors within 1-2% of each other rank equal, and among equal ranks
-/// candidates pop first in, first out, so a region grows breadth-first through faces that fit
-/// it about equally well (whole planar sides tie at error 0). Errors 2^63 times below the
-/// metric's ErrorScale() rank 0. Ranks are few, so this is a bucket queue, O(1) per push and pop: exact
-/// error order cost more time for no better partitions (docs/tuning.md). Each rank keeps its
-/// candidates in an array of its own, so that pops read memory in order.
-class FloodQueue
+/// Errors ranked for the flood: an error rounded down to 7 significant bits is its rank, so
+/// errors within 1-2% of each other rank equal and a region grows breadth-first through faces
+/// that fit it about equally well (whole planar sides tie at error 0). Errors 2^63 times below
+/// the metric's ErrorScale() rank 0. Ranks are few, so candidates wait in one array per rank:
+/// exact error order cost more time for no better partitions (docs/tuning.md).
+class FloodRanks
 {
 public:
-    struct Candidate
-    {
-        int face;
-        int region;
-    };
     using Rank = uint32_t;
     static constexpr int kSignificantBits = 6;  ///< after the leading one
     static constexpr int kBinades = 64;
     static constexpr Rank kRanks = Rank(kBinades) << kSignificantBits;
-    static constexpr Rank kNoRank = ~Rank(0);  ///< ranks after every real one
+    static constexpr Rank kNoRank = ~Rank(0);  ///< after every real rank
 
-    /// Empties the queue and ranks errors relative to `errorScale` from now on.
+    /// Ranks errors relative to `errorScale` from now on.
     void Reset(double errorScale)
     {
         if (!(errorScale > 0 && errorScale < std::numeric_limits<double>::infinity())) errorScale = 1;
-        buckets_.resize(kRanks);
-        if (count_)  // a flood interrupted; after a whole one every bucket is empty already
-            for (Bucket &b : buckets_) b = Bucket();
-        std::fill(std::begin(words_), std::end(words_), 0);
-        summary_ = 0;
-        count_ = 0;
         // Ranks span the kBinades binades below twice the scale: errors above that share the
         // last rank, errors below it rank 0.
         lowestRankedBits_ = int64_t(Bits(errorScale) >> kMantissaShift) + (int64_t(1) << kSignificantBits) -
@@ -83,52 +71,78 @@ public:
         return rank < 0 ? 0 : rank >= int64_t(kRanks) ? kRanks - 1 : Rank(rank);
     }
 
-    bool Empty() const { return count_ == 0; }
-
-    void Push(Rank rank, const Candidate &c)
-    {
-        Bucket &b = buckets_[rank];
-        if (b.items.empty()) {
-            words_[rank >> 6] |= uint64_t(1) << (rank & 63);
-            summary_ |= uint64_t(1) << (rank >> 6);
-        }
-        b.items.push_back(c);
-        ++count_;
-    }
-
-    Candidate Pop()  // queue not empty
-    {
-        const int word = LowestBit(summary_);
-        const Rank rank = Rank(word << 6) + Rank(LowestBit(words_[word]));
-        Bucket &b = buckets_[rank];
-        const Candidate c = b.items[b.head++];
-        if (b.head == b.items.size()) {
-            b.items.clear();
-            b.head = 0;
-            words_[word] &= ~(uint64_t(1) << (rank & 63));
-            if (!words_[word]) summary_ &= ~(uint64_t(1) << word);
-        }
-        --count_;
-        return c;
-    }
-
 private:
-    static_assert(kRanks / 64 <= 64, "one summary word must cover every word of ranks");
     static constexpr int kMantissaShift = 52 - kSignificantBits;
-
-    /// One rank's candidates in push order; those before `head` have popped.
-    struct Bucket
-    {
-        std::vector<Candidate> items;
-        size_t head = 0;
-    };
-
     static uint64_t Bits(double x)  // for x >= 0 their integer order is the numeric order
     {
         uint64_t bits;
         std::memcpy(&bits, &x, sizeof bits);
         return bits;
     }
+
+    int64_t lowestRankedBits_ = 0;  ///< the shifted error bits that rank 0
+};
+
+/// A face offered to a region during a flood.
+struct FloodCandidate
+{
+    int face;
+    int region;
+};
+
+/// Flood candidates waiting for their rank: an array per rank, in push order, and a bit per rank
+/// that holds any, so that the lowest is found in two word scans.
+class RankBuckets
+{
+public:
+    using Rank = FloodRanks::Rank;
+
+    bool Empty() const { return summary_ == 0; }
+
+    /// The lowest rank holding candidates, FloodRanks::kNoRank when empty.
+    Rank Lowest() const
+    {
+        if (!summary_) return FloodRanks::kNoRank;
+        const int word = LowestBit(summary_);
+        return Rank(word << 6) + Rank(LowestBit(words_[word]));
+    }
+
+    void Push(Rank rank, const FloodCandidate &c)
+    {
+        if (buckets_.empty()) buckets_.resize(FloodRanks::kRanks);
+        std::vector<FloodCandidate> &b = buckets_[rank];
+        if (b.empty()) {
+            words_[rank >> 6] |= uint64_t(1) << (rank & 63);
+            summary_ |= uint64_t(1) << (rank >> 6);
+        }
+        b.push_back(c);
+    }
+
+    /// Appends the candidates of `rank` to `to`, in push order, and forgets them.
+    void MoveOut(Rank rank, std::vector<FloodCandidate> &to)
+    {
+        if (!(words_[rank >> 6] >> (rank & 63) & 1)) return;
+        std::vector<FloodCandidate> &b = buckets_[rank];
+        if (to.empty()) to.swap(b);  // keeps both arrays' memory in use: no copy, no allocation
+        else to.insert(to.end(), b.begin(), b.end());
+        b.clear();
+        words_[rank >> 6] &= ~(uint64_t(1) << (rank & 63));
+        if (!words_[rank >> 6]) summary_ &= ~(uint64_t(1) << (rank >> 6));
+    }
+
+    /// Forgets every candidate (those a flood stopped early left behind).
+    void Clear()
+    {
+        for (Rank rank = Lowest(); rank != FloodRanks::kNoRank; rank = Lowest()) {
+            buckets_[rank].clear();
+            words_[rank >> 6] &= ~(uint64_t(1) << (rank & 63));
+            if (!words_[rank >> 6]) summary_ &= ~(uint64_t(1) << (rank >> 6));
+        }
+    }
+
+private:
+    static_assert(FloodRanks::kRanks / 64 <= 64, "one summary word must cover every word of ranks");
+
     static int LowestBit(uint64_t x)  // x != 0
     {
 #if defined(__GNUC__) || defined(__clang__)
@@ -144,11 +158,50 @@ private:
 #endif
     }
 
-    std::vector<Bucket> buckets_;  ///< per rank
-    uint64_t words_[kRanks / 64] = {};  ///< bit r: rank r holds entries
-    uint64_t summary_ = 0;              ///< bit w: words_[w] != 0
-    int64_t lowestRankedBits_ = 0;      ///< the shifted error bits that rank 0
-    size_t count_ = 0;
+    std::vector<std::vector<FloodCandidate>> buckets_;  ///< per rank
+    uint64_t words_[FloodRanks::kRanks / 64] = {};      ///< bit r: rank r holds candidates
+    uint64_t summary_ = 0;                              ///< bit w: words_[w] != 0
+};
+
+/// What one thread of a flood keeps: the candidates it queued, and the faces it labelled in the
+/// current wave.
+struct FloodLane
+{
+    RankBuckets later;                 ///< candidates of ranks after the current one
+    std::vector<FloodCandidate> next;  ///< candidates for the next wave of the current rank
+    std::vector<int> labelled;         ///< faces labelled in the current wave
+};
+
+/// Whether a large wave of the flood runs on every thread or on the calling one: whichever took
+/// less time per candidate in the last waves that ran that way. On a busy machine a wave on
+/// every thread waits for a thread the system put aside, often longer than one thread takes
+/// alone; the labels are the same either way, only the time differs.
+class WavePolicy
+{
+public:
+    /// How the next large wave runs: true on every thread.
+    bool Choose()
+    {
+        if (perCandidate_[0] == 0) return false;  // each way measured once first
+        if (perCandidate_[1] == 0) return true;
+        const bool faster = perCandidate_[1] < perCandidate_[0];
+        if (++sinceProbe_ < kProbeWaves) return faster;
+        sinceProbe_ = 0;  // now and then the other way, in case the machine's load changed
+        return !faster;
+    }
+
+    void Record(bool shared, size_t candidates, double seconds)
+    {
+        const double x = seconds / double(candidates);
+        double &p = perCandidate_[shared];
+        p = p == 0 ? x : p + kWeight * (x - p);
+    }
+
+private:
+    static constexpr int kProbeWaves = 64;  ///< large waves between two runs the slower way
+    static constexpr double kWeight = 0.25;  ///< of the latest wave in the running mean
+    double perCandidate_[2] = {0, 0};       ///< seconds, on one thread and on every thread
+    int sinceProbe_ = 0;
 };
 
 /// Scratch memory reused by every flood and growth, so that the hot loops never allocate.
@@ -160,17 +213,26 @@ private:
 template <class Metric, class Neighbors = std::array<int, 3>>
 struct PartitionWorkspace
 {
-    /// Everything the flood reads about a face, together: popping a face and offering its
+    /// Everything the flood reads about a face, together: labelling a face and offering its
     /// neighbours then costs a cache line per face instead of one per array.
     struct alignas(64) Node
     {
-        FloodQueue::Rank queuedRank;  ///< best rank queued for this face during a flood
-        int region;                   ///< label during a flood: -1 while free; between floods >= 0 (a wall)
+        /// (n << 32) | region once labelled in the flood's n-th wave (n from 1, over every rank);
+        /// kFreeLabel while free. Faces labelled before the flood (walls) and seeds have n = 0.
+        /// One word, so that a face offered to several regions in one wave is decided by one
+        /// atomic minimum.
+        uint64_t label;
+        uint32_t queuedKey;  ///< the smallest key (FloodKey) queued for this face during a flood
         Neighbors neighbors;
         typename Metric::FaceData data;
+
+        int Region() const { return int(uint32_t(label)); }
     };
     std::vector<Node> nodes;
-    FloodQueue queue;
+    FloodRanks ranks;
+    std::vector<FloodLane> lanes;        ///< per thread
+    std::vector<FloodCandidate> wave;    ///< the current wave's candidates
+    WavePolicy wavePolicy;
     std::vector<int> visitMark;  ///< per face: the last growth that looked at it
     int visitStamp = 0;
     std::vector<int> stack;
@@ -180,6 +242,57 @@ struct PartitionWorkspace
 
 namespace detail {
 
+constexpr uint64_t kFreeLabel = ~uint64_t(0);
+
+/// A node's label for `region` in the flood's n-th wave (0: before the flood).
+inline uint64_t FloodLabel(uint32_t n, int region) { return uint64_t(n) << 32 | uint32_t(region); }
+
+/// Waves within a rank that keys tell apart; later waves share the last key, which only lets
+/// candidates that cannot label their face any more be queued.
+constexpr int kFloodWaveBits = 32 - 12;
+static_assert(FloodRanks::kRanks <= (uint32_t(1) << (32 - kFloodWaveBits)), "a key holds every rank");
+
+/// When a candidate is due: its rank, then its wave within that rank.
+inline uint32_t FloodKey(FloodRanks::Rank rank, uint32_t wave)
+{
+    const uint32_t lastWave = (uint32_t(1) << kFloodWaveBits) - 1;
+    return rank << kFloodWaveBits | std::min(wave, lastWave);
+}
+
+/// Lowers `word` to `value` when that is smaller and returns the value it had, atomically when
+/// `kShared` (other threads lower it at the same time).
+template <bool kShared, class T>
+T LowerTo(T &word, T value)
+{
+    static_assert(sizeof(T) == 4 || sizeof(T) == 8, "a word");
+    if (!kShared) {
+        const T old = word;
+        if (value < old) word = value;
+        return old;
+    }
+#if defined(__GNUC__) || defined(__clang__)
+    T old = __atomic_load_n(&word, __ATOMIC_RELAXED);
+    while (value < old && !__atomic_compare_exchange_n(&word, &old, value, true, __ATOMIC_RELAXED, __ATOMIC_RELAXED)) {
+    }
+    return old;
+#elif defined(_MSC_VER)
+    T old = word;
+    while (value < old) {
+        T seen;
+        if constexpr (sizeof(T) == 8)
+            seen = T(_InterlockedCompareExchange64(reinterpret_cast<volatile __int64 *>(&word), __int64(value),
+                                                   __int64(old)));
+        else
+            seen = T(_InterlockedCompareExchange(reinterpret_cast<volatile long *>(&word), long(value), long(old)));
+        if (seen == old) break;
+        old = seen;
+    }
+    return old;
+#else
+#error "LowerTo needs an atomic compare-and-swap"
+#endif
+}
+
 template <class Graph, class Metric, class Neighbors>
 void PrepareNodes(const Graph &mesh, const Metric &metric, PartitionWorkspace<Metric, Neighbors> &ws)
 {
@@ -188,45 +301,180 @@ void PrepareNodes(const Graph &mesh, const Metric &metric, PartitionWorkspace<Me
     ResizeReporting(ws.nodes, size_t(mesh.FaceCount()));
     ForEachChunk(size_t(mesh.FaceCount()), [&](int, size_t begin, size_t end) {
         for (size_t f = begin; f < end; ++f) {
-            ws.nodes[f].region = 0;
+            ws.nodes[f].label = FloodLabel(0, 0);
             ws.nodes[f].neighbors = mesh.neighbors[f];
             ws.nodes[f].data = metric.Data(int(f));
         }
     });
 }
 
-/// The flood proper, on nodes already marked: free ones with region -1 and no queued error.
-/// `seeds` lists (region, seed face) pairs by increasing region.
+/// Marks a node free (its region < 0) or a wall of `region`, with nothing queued.
+template <class Node>
+void MarkNode(Node &node, int region)
+{
+    node.label = region < 0 ? kFreeLabel : FloodLabel(0, region);
+    node.queuedKey = ~uint32_t(0);
+}
+
+/// One flood in progress: the rank whose candidates are due, and the wave within it.
+/// Candidates of a wave are decided together, so the labels do not depend on the order in which
+/// they were queued, nor on the thread that queued them.
+template <class Metric, class Neighbors>
+class Flooding
+{
+public:
+    using Workspace = PartitionWorkspace<Metric, Neighbors>;
+
+    Flooding(const Metric &metric, const std::vector<Proxy> &proxies, Workspace &ws)
+        : metric_(metric), proxies_(proxies), ws_(ws)
+    {
+        ws_.ranks.Reset(metric.ErrorScale());
+        ws_.lanes.resize(size_t(MaxThreads()));
+        for (FloodLane &lane : ws_.lanes) {  // a flood stopped early left candidates behind
+            lane.later.Clear();
+            lane.next.clear();
+            lane.labelled.clear();
+        }
+        ws_.wave.clear();
+    }
+
+    /// Labels the seeds, (region, face) pairs, and floods from them.
+    void Run(const std::vector<std::pair<int, int>> &seeds)
+    {
+        for (const auto &seed : seeds) ws_.nodes[seed.second].label = FloodLabel(0, seed.first);
+        // The seeds' offers come before wave 0 of rank 0: those of rank 0 make that wave.
+        current_ = 0;
+        wave_ = ~uint32_t(0);
+        for (const auto &seed : seeds)
+            for (int g : ws_.nodes[seed.second].neighbors) Offer<false>(g, seed.first, ws_.lanes[0]);
+        TakeNextWave();
+        for (;;) {
+            for (wave_ = 0; !ws_.wave.empty(); ++wave_) {
+                RunWave();
+                TakeNextWave();
+            }
+            current_ = FloodRanks::kNoRank;
+            for (const FloodLane &lane : ws_.lanes) current_ = std::min(current_, lane.later.Lowest());
+            if (current_ == FloodRanks::kNoRank) return;
+            for (FloodLane &lane : ws_.lanes) lane.later.MoveOut(current_, ws_.wave);
+        }
+    }
+
+private:
+    /// Candidates per piece of a wave handed to a thread: a few microseconds of work each.
+    static constexpr int kWavePiece = 512;
+
+    /// Gathers the candidates the last wave queued for the next one; false when there are none.
+    bool TakeNextWave()
+    {
+        ws_.wave.clear();
+        for (FloodLane &lane : ws_.lanes) {
+            if (ws_.wave.empty()) ws_.wave.swap(lane.next);
+            else ws_.wave.insert(ws_.wave.end(), lane.next.begin(), lane.next.end());
+            lane.next.clear();
+        }
+        return !ws_.wave.empty();
+    }
+
+    /// Labels the free faces of the wave's candidates, each with the lowest region offered it
+    /// in this wave, then offers their free neighbours to their regions. On every thread when
+    /// the wave is large; the labels are the same either way.
+    void RunWave()
+    {
+        ++stamp_;
+        const std::vector<FloodCandidate> &wave = ws_.wave;
+        progress_.Count(int(wave.size()));  // on the calling thread, before the others start
+        if (MaxThreads() == 1 || wave.size() < detail::ParallelMinWave()) {
+            RunWaveAlone();
+            return;
+        }
+        // Tests that lower the bound send every wave above it to the threads.
+        const bool shared = detail::ParallelMinWave() < kParallelMinWave || ws_.wavePolicy.Choose();
+        const auto start = std::chrono::steady_clock::now();
+        if (shared) RunWaveShared();
+        else RunWaveAlone();
+        ws_.wavePolicy.Record(shared, wave.size(),
+                              std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+    }
+
+    void RunWaveAlone()
+    {
+        Claim<false>(0, ws_.wave.size(), ws_.lanes[0]);
+        OfferNeighbours<false>(ws_.lanes[0]);
+    }
+
+    void RunWaveShared()
+    {
+#ifdef _OPENMP
+        const size_t size = ws_.wave.size();
+        const int pieces = int((size + kWavePiece - 1) / kWavePiece);
+#pragma omp parallel
+        {
+            FloodLane &lane = ws_.lanes[size_t(ThreadIndex())];
+#pragma omp for schedule(dynamic, 1)
+            for (int p = 0; p < pieces; ++p)
+                Claim<true>(size_t(p) * kWavePiece, std::min(size, size_t(p + 1) * kWavePiece), lane);
+            // Every claim of the wave is in (the loop's barrier): the labels are final.
+            OfferNeighbours<true>(lane);
+        }
+#else
+        RunWaveAlone();
+#endif
+    }
+
+    template <bool kShared>
+    void Claim(size_t begin, size_t end, FloodLane &lane)
+    {
+        for (size_t i = begin; i < end; ++i) {
+            const FloodCandidate c = ws_.wave[i];
+            if (LowerTo<kShared>(ws_.nodes[c.face].label, FloodLabel(stamp_, c.region)) == kFreeLabel)
+                lane.labelled.push_back(c.face);
+        }
+    }
+
+    template <bool kShared>
+    void OfferNeighbours(FloodLane &lane)
+    {
+        for (int f : lane.labelled) {
+            const int region = ws_.nodes[f].Region();
+            for (int g : ws_.nodes[f].neighbors) Offer<kShared>(g, region, lane);
+        }
+        lane.labelled.clear();
+    }
+
+    /// Queues free face `face` for `region`: in the next wave when its error ranks at or below
+    /// the current rank, else in wave 0 of its rank. Not when a candidate due earlier is queued
+    /// for it already: that one decides the face first.
+    template <bool kShared>
+    void Offer(int face, int region, FloodLane &lane)
+    {
+        if (face < 0) return;
+        auto &node = ws_.nodes[face];
+        if (node.label != kFreeLabel) return;  // no label changes while neighbours are offered
+        const FloodRanks::Rank rank = ws_.ranks.RankOf(metric_.Error(node.data, proxies_[region]));
+        const bool now = rank <= current_;
+        const uint32_t key = now ? FloodKey(current_, wave_ + 1) : FloodKey(rank, 0);
+        if (LowerTo<kShared>(node.queuedKey, key) < key) return;
+        if (now) lane.next.push_back({face, region});
+        else lane.later.Push(rank, {face, region});
+    }
+
+    const Metric &metric_;
+    const std::vector<Proxy> &proxies_;
+    Workspace &ws_;
+    FloodRanks::Rank current_ = 0;  ///< the rank whose waves run
+    uint32_t wave_ = 0;             ///< the wave within it
+    uint32_t stamp_ = 0;            ///< waves run, over every rank: the labels' n
+    ProgressCounter progress_;
+};
+
+/// The flood proper, on nodes already marked (MarkNode). `seeds` lists (region, seed face)
+/// pairs by increasing region.
 template <class Metric, class Neighbors>
 void Flood(const Metric &metric, const std::vector<Proxy> &proxies, const std::vector<std::pair<int, int>> &seeds,
            PartitionWorkspace<Metric, Neighbors> &ws)
 {
-    using Node = typename PartitionWorkspace<Metric, Neighbors>::Node;
-    auto &nodes = ws.nodes;
-    FloodQueue &queue = ws.queue;
-    queue.Reset(metric.ErrorScale());
-    const auto offer = [&](int face, int region) {
-        if (face < 0) return;
-        Node &node = nodes[face];
-        if (node.region >= 0) return;
-        const FloodQueue::Rank rank = queue.RankOf(metric.Error(node.data, proxies[region]));
-        if (rank < node.queuedRank) {  // else the one queued first pops first
-            node.queuedRank = rank;
-            queue.Push(rank, {face, region});
-        }
-    };
-    for (const auto &seed : seeds) nodes[seed.second].region = seed.first;
-    for (const auto &seed : seeds)
-        for (int g : nodes[seed.second].neighbors) offer(g, seed.first);
-    ProgressCounter progress;
-    while (!queue.Empty()) {
-        const FloodQueue::Candidate c = queue.Pop();
-        progress.Count();
-        Node &node = nodes[c.face];
-        if (node.region >= 0) continue;
-        node.region = c.region;
-        for (int g : node.neighbors) offer(g, c.region);
-    }
+    Flooding<Metric, Neighbors>(metric, proxies, ws).Run(seeds);
 }
 
 /// For SumByKey over the faces: a face's region when `only` flags it (or is empty), else -1.
@@ -242,35 +490,37 @@ inline auto FlaggedRegionOf(const std::vector<int> &faceRegion, const std::vecto
 template <class Node>
 bool TakeLabel(Node &node, int &label)
 {
-    label = node.region;
-    if (node.region >= 0) return true;
-    node.region = 0;
+    if (node.label != kFreeLabel) {
+        label = node.Region();
+        return true;
+    }
+    label = -1;
+    node.label = FloodLabel(0, 0);
     return false;
 }
 
 }  // namespace detail
 
-/// Labels every face whose faceRegion is -1 by growing the regions from their seed faces with
-/// one global priority queue, as in the paper: the queue holds (face, region) candidates keyed
-/// by the face's error to the region's proxy; the best candidate is popped, labels its face if
-/// still free, and offers that face's free neighbours to the same region. Each face is labelled
-/// once and every region grows connected. Faces already labelled are walls. seeds[r] = -1
-/// leaves region r out. Candidates pop by rank of their error, first in first out among equal
-/// ranks (FloodQueue). A candidate that does not rank before one already queued for the same
-/// face could never label it, so it is not queued at all: the labels are those of the flood
-/// that queues every candidate, with less work.
+/// Labels every face whose faceRegion is -1 by growing the regions from their seed faces, as in
+/// the paper: (face, region) candidates keyed by the face's error to the region's proxy, the
+/// best first; a candidate labels its face if still free and offers that face's free
+/// neighbours to the same region. Each face is labelled once and every region grows connected.
+/// Faces already labelled are walls. seeds[r] = -1 leaves region r out.
+/// The key is the rank of the error (FloodRanks), then the wave: a rank's candidates are taken
+/// in waves, wave t + 1 holding what the faces labelled in wave t offered at that rank or
+/// below, so that a region grows breadth-first through faces it fits about equally well. The
+/// candidates of one wave are decided together, a face going to the lowest region offered it
+/// in that wave: each wave runs on every thread when it is large, and the labels are the same
+/// on any number of threads. A candidate due after one already queued for the same face could
+/// never label it, so it is not queued at all.
 /// Returns how many free faces no seed could reach (none when every component has a seed).
 template <class Graph, class Metric, class Neighbors>
 int FloodRegions(const Graph &mesh, const Metric &metric, const std::vector<Proxy> &proxies,
                  const std::vector<int> &seeds, std::vector<int> &faceRegion, PartitionWorkspace<Metric, Neighbors> &ws)
 {
     detail::PrepareNodes(mesh, metric, ws);
-    // The flood itself is one priority queue, sequential; marking and reading out run in parallel.
     ForEachChunk(size_t(mesh.FaceCount()), [&](int, size_t begin, size_t end) {
-        for (size_t f = begin; f < end; ++f) {
-            ws.nodes[f].queuedRank = FloodQueue::kNoRank;
-            ws.nodes[f].region = faceRegion[f];
-        }
+        for (size_t f = begin; f < end; ++f) detail::MarkNode(ws.nodes[f], faceRegion[f]);
     });
     std::vector<std::pair<int, int>> regionSeeds;
     for (int r = 0; r < int(seeds.size()); ++r)
@@ -287,7 +537,7 @@ int FloodRegions(const Graph &mesh, const Metric &metric, const std::vector<Prox
 
 /// The same flood confined to `faces`: only they are relabelled, from the (region, seed face)
 /// pairs `seeds` (by increasing region, seeds among `faces`); every other face is a wall. Costs
-/// O(|faces| log |faces|), not a pass over the mesh. Returns how many of `faces` no seed
+/// O(|faces|), not a pass over the mesh. Returns how many of `faces` no seed
 /// reached (they keep -1 in faceRegion).
 template <class Graph, class Metric, class Neighbors>
 int FloodWithin(const Graph &mesh, const Metric &metric, const std::vector<Proxy> &proxies,
@@ -297,8 +547,7 @@ int FloodWithin(const Graph &mesh, const Metric &metric, const std::vector<Proxy
     detail::PrepareNodes(mesh, metric, ws);
     ProgressCounter progress;
     for (int f : faces) {
-        ws.nodes[f].queuedRank = FloodQueue::kNoRank;
-        ws.nodes[f].region = -1;
+        detail::MarkNode(ws.nodes[f], -1);
         progress.Count();
     }
     detail::Flood(metric, proxies, seeds, ws);
@@ -323,8 +572,7 @@ int FloodWithinAlone(const Graph &mesh, const ListedFacesMetric<Metric> &metric,
     ProgressCounter progress;
     for (size_t i = 0; i < faces.size(); ++i) {
         auto &node = ws.nodes[i];
-        node.queuedRank = FloodQueue::kNoRank;
-        node.region = -1;
+        detail::MarkNode(node, -1);
         for (int k = 0; k < 3; ++k) {
             const int g = mesh.neighbors[faces[i]][k];
             node.neighbors[k] = g < 0 ? -1 : metric.Listed(g);
