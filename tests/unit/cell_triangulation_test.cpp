@@ -1,6 +1,7 @@
 // Tests of vsa/cell_triangulation.h.
 #include "meshing_fixtures.h"
 #include "meshing_test_util.h"
+#include "partition_test_helpers.h"
 #include "test_meshes.h"
 
 #include <vsa/cell_triangulation.h>
@@ -8,6 +9,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <functional>
@@ -64,6 +66,80 @@ TEST(CellTriangulation, FloodingCarriedOverToHalvedCellsEqualsAFreshOne)
     CellFlooding carried(halved, earlier);
     for (const std::vector<char> &required : {std::vector<char>(), r.required.back()})
         ExpectFloodingFromScratch(halved, FreshAnchors(halved, r.partition.proxies, 0.5, required), carried);
+}
+
+namespace {
+
+/// A repair sequence on the hemisphere cut into 4 x 4 tiles (many cells), and all its cells.
+void MakeTiledHemisphere(RepairSequence &r, std::vector<int> &cells)
+{
+    MakeHemisphereRepairSequence(3, r, 4);
+    ASSERT_GE(r.surface.CellCount(), 12);
+    cells.resize(r.surface.CellCount());
+    std::iota(cells.begin(), cells.end(), 0);
+}
+
+}  // namespace
+
+// Cells flood at once only when they share no loop vertex: their floodings write their loops.
+// Each round is also the first one free of the cell's neighbours, so rounds stay few.
+TEST(CellTriangulation, DisjointCellRoundsShareNoLoopVertexAndAreTheFirstFree)
+{
+    RepairSequence r;
+    std::vector<int> cells;
+    MakeTiledHemisphere(r, cells);
+    const MeshingSurface &s = r.surface;
+    std::reverse(cells.begin(), cells.end());  // any order: the rounds follow it
+    const detail::CellRounds rounds = detail::DisjointCellRounds(s, cells);
+    EXPECT_TRUE(rounds.rest.empty());
+    ASSERT_GE(rounds.disjoint.size(), 2u);
+    const auto meet = [&](int a, int b) {
+        const std::vector<int> &la = s.cellLoop[a], &lb = s.cellLoop[b];
+        for (int v : la)
+            if (std::find(lb.begin(), lb.end(), v) != lb.end()) return true;
+        return false;
+    };
+    std::vector<int> roundOf(s.CellCount(), -1), position(s.CellCount());
+    for (size_t k = 0; k < cells.size(); ++k) position[cells[k]] = int(k);
+    for (size_t round = 0; round < rounds.disjoint.size(); ++round)
+        for (int c : rounds.disjoint[round]) {
+            EXPECT_EQ(roundOf[c], -1) << "cell " << c << " twice";
+            roundOf[c] = int(round);
+        }
+    for (int c = 0; c < s.CellCount(); ++c) {
+        ASSERT_GE(roundOf[c], 0) << "cell " << c << " left out";
+        for (int d = 0; d < s.CellCount(); ++d)
+            EXPECT_FALSE(d != c && roundOf[d] == roundOf[c] && meet(c, d)) << "cells " << c << " and " << d;
+        for (int earlier = 0; earlier < roundOf[c]; ++earlier) {
+            bool taken = false;
+            for (int d : rounds.disjoint[earlier]) taken |= position[d] < position[c] && meet(c, d);
+            EXPECT_TRUE(taken) << "cell " << c << " could have gone to round " << earlier;
+        }
+    }
+}
+
+// The cells of a pass flood on the threads, in rounds; their triples must be those of flooding
+// one cell at a time, pass after pass (the updates included), on any number of threads.
+TEST(CellTriangulation, TriplesOfCellsOnThreadsAreThoseOfOneCellAtATime)
+{
+    RepairSequence r;
+    std::vector<int> cells;
+    MakeTiledHemisphere(r, cells);
+    const MeshingSurface &s = r.surface;
+    for (int threads : {1, 2, 3}) {
+        SCOPED_TRACE(threads);
+        CellFlooding oneByOne(s), onThreads(s);
+        for (const std::vector<char> &required : r.required) {
+            const AnchorSet anchors = FreshAnchors(s, r.partition.proxies, 0.5, required);
+            const auto triples = WithThreads(threads, [&] { return onThreads.TriplesOfCells(cells, anchors); });
+            ASSERT_EQ(int(triples.size()), s.CellCount());
+            for (int c = 0; c < s.CellCount(); ++c) {
+                EXPECT_EQ(triples[c], oneByOne.Triples(c, anchors)) << "cell " << c;
+                EXPECT_EQ(onThreads.VerticesDeepestFirst(c, anchors), oneByOne.VerticesDeepestFirst(c, anchors))
+                    << "cell " << c;
+            }
+        }
+    }
 }
 
 TEST(CellTriangulation, CrossingPolygonEdgesAreThoseOfTestingEveryPair)

@@ -118,15 +118,22 @@ struct RepairSequence
     std::vector<std::vector<char>> required;
 };
 
-inline void MakeRepairSequence(const TMesh &m, int steps, RepairSequence &r)
+/// `tiles` > 0: cut into tiles x tiles regions by the faces' x and y instead (for m in
+/// [-1, 1]^2), so that there are many cells.
+inline void MakeRepairSequence(const TMesh &m, int steps, RepairSequence &r, int tiles = 0)
 {
     r.mesh = BuildIndexedMesh(m);
-    r.partition = vsa_test::PartitionByRule(r.mesh, 3, [&](int f) {
+    const int k = tiles > 0 ? tiles * tiles : 3;
+    r.partition = vsa_test::PartitionByRule(r.mesh, k, [&](int f) {
         const Point3d c = vsa_test::FaceCentroid(r.mesh, f);
+        if (tiles > 0) {
+            const auto tile = [&](double x) { return std::min(tiles - 1, std::max(0, int((x + 1) / 2 * tiles))); };
+            return tile(c[0]) * tiles + tile(c[1]);
+        }
         return c[0] < -0.3 ? 0 : (c[1] < 0.2 ? 1 : 2);
     });
     std::string error;
-    ASSERT_TRUE(BuildMeshingSurface(r.mesh, r.partition.faceRegion, 3, r.surface, error)) << error;
+    ASSERT_TRUE(BuildMeshingSurface(r.mesh, r.partition.faceRegion, k, r.surface, error)) << error;
     r.required.assign(1, {});
     unsigned state = 12345;
     for (int step = 0; step < steps; ++step) {
@@ -141,11 +148,11 @@ inline void MakeRepairSequence(const TMesh &m, int steps, RepairSequence &r)
 }
 
 /// MakeRepairSequence on a hemisphere of 12 rings and 32 sectors.
-inline void MakeHemisphereRepairSequence(int steps, RepairSequence &r)
+inline void MakeHemisphereRepairSequence(int steps, RepairSequence &r, int tiles = 0)
 {
     TMesh hemisphere;
     vsa_test::MakeHemisphere(hemisphere, 12, 32);
-    MakeRepairSequence(hemisphere, steps, r);
+    MakeRepairSequence(hemisphere, steps, r, tiles);
 }
 
 /// Anchors by a chord subdivision made for this call alone.
@@ -164,7 +171,7 @@ inline void ExpectFloodingFromScratch(const MeshingSurface &s, const AnchorSet &
         const std::vector<std::array<int, 3>> expected = fresh.Triples(c, anchors);
         EXPECT_GT(expected.size(), 0u);
         EXPECT_EQ(flooding.Triples(c, anchors), expected) << "cell " << c;
-        EXPECT_EQ(flooding.VerticesDeepestFirst(c), fresh.VerticesDeepestFirst(c)) << "cell " << c;
+        EXPECT_EQ(flooding.VerticesDeepestFirst(c, anchors), fresh.VerticesDeepestFirst(c, anchors)) << "cell " << c;
     }
 }
 

@@ -49,6 +49,42 @@ struct CellTriangulation
     Point3d planeNormal;           ///< normal of the plane the polygon was clipped on
 };
 
+namespace detail {
+
+/// Cells in rounds whose cells share no loop vertex, and the cells left over.
+struct CellRounds
+{
+    std::vector<std::vector<int>> disjoint;
+    std::vector<int> rest;  ///< to flood one at a time
+};
+
+/// `cells` in rounds (see CellRounds), greedily in their order: each cell goes to the first
+/// round that none of the cells at its loop vertices is in. Rounds are bits of a word per
+/// vertex; a cell that finds every bit taken (a vertex on very many cells) is left over.
+inline CellRounds DisjointCellRounds(const MeshingSurface &s, const std::vector<int> &cells)
+{
+    using Mask = uint32_t;
+    constexpr int kRounds = 32;
+    CellRounds rounds;
+    std::vector<Mask> taken(s.VertexCount(), 0);
+    for (int c : cells) {
+        Mask near = 0;
+        for (int v : s.cellLoop[c]) near |= taken[v];
+        int round = 0;
+        while (round < kRounds && (near >> round & 1)) ++round;
+        if (round == kRounds) {
+            rounds.rest.push_back(c);
+            continue;
+        }
+        if (round == int(rounds.disjoint.size())) rounds.disjoint.emplace_back();
+        rounds.disjoint[round].push_back(c);
+        for (int v : s.cellLoop[c]) taken[v] |= Mask(1) << round;
+    }
+    return rounds;
+}
+
+}  // namespace detail
+
 /// The report's discrete flooding: every vertex of a cell takes the colour of its nearest
 /// anchor along edges, boundary vertices first along the boundary (so each chord's vertices
 /// split between its two anchors), then interior vertices by Dijkstra from the boundary. A
@@ -73,7 +109,8 @@ public:
           root_(s.positions.size(), -1),
           changed_(s.positions.size(), 0),
           loopColor_(s.CellCount()),
-          loopDistance_(s.CellCount())
+          loopDistance_(s.CellCount()),
+          queues_(MaxThreads())
     {
         FindInteriors();
     }
@@ -93,7 +130,8 @@ public:
           root_(std::move(earlier.root_)),
           changed_(s.positions.size(), 0),
           loopColor_(s.CellCount()),
-          loopDistance_(s.CellCount())
+          loopDistance_(s.CellCount()),
+          queues_(MaxThreads())
     {
         FindInteriors();
         const MeshingSurface &before = earlier.s_;
@@ -132,10 +170,33 @@ public:
         return triples;
     }
 
-    /// Vertices of cell c, flooded last, deepest inside first: interior vertices by their
-    /// distance to the anchors, farthest first, then the boundary vertices.
-    std::vector<int> VerticesDeepestFirst(int c) const
+    /// Triples(c, anchors) of each of `cells`, on every thread, indexed by cell (empty for the
+    /// others). A cell's flooding writes only its own vertices and loop, and starts from its
+    /// own last flooding, so cells that share no loop vertex flood at once, and in any order
+    /// give the colours they give one after the other.
+    std::vector<std::vector<std::array<int, 3>>> TriplesOfCells(const std::vector<int> &cells,
+                                                                const AnchorSet &anchors)
     {
+        std::vector<std::vector<std::array<int, 3>>> triples(s_.CellCount());
+        queues_.resize(std::max(queues_.size(), size_t(MaxThreads())));
+        const detail::CellRounds rounds = detail::DisjointCellRounds(s_, cells);
+        for (const std::vector<int> &round : rounds.disjoint)
+            ForEachGroup(
+                int(round.size()), detail::CellFaceTotal(s_, round), [&](int k) { return s_.CellFaceCount(round[k]); },
+                [&](int k) { triples[round[k]] = Triples(round[k], anchors); });
+        for (int c : rounds.rest) {
+            triples[c] = Triples(c, anchors);
+            ProgressTick(s_.CellFaceCount(c));
+        }
+        return triples;
+    }
+
+    /// Vertices of cell c, flooded last, deepest inside first: interior vertices by their
+    /// distance to the anchors, farthest first, then the boundary vertices (coloured for c
+    /// again: a neighbouring cell may have flooded since).
+    std::vector<int> VerticesDeepestFirst(int c, const AnchorSet &anchors)
+    {
+        ColorLoop(c, anchors);
         auto deeper = [&](int a, int b) { return distance_[a] != distance_[b] ? distance_[a] > distance_[b] : a < b; };
         std::vector<int> vertices, loop(s_.cellLoop[c]);
         for (int k = interiorOffset_[c]; k < interiorOffset_[c + 1]; ++k)
@@ -182,7 +243,6 @@ private:
     std::shared_ptr<const Edges> edges_;
     std::vector<int> interiorOf_;  ///< per vertex: the cell it is inside of, -1 on a loop
     std::vector<int> interiorOffset_, interior_;  ///< cell c's interior: interior_[interiorOffset_[c] .. c+1)
-    std::vector<QueueItem> queue_;  ///< a min-heap, kept to reuse its storage
     // Per vertex: loop vertices hold what the cell flooded last gave them, interior vertices
     // what their own cell's last flooding did.
     std::vector<int> color_;  ///< the anchor's surface vertex, -1 for none
@@ -192,15 +252,17 @@ private:
     std::vector<char> changed_;  ///< loop vertex: changed since its cell's last flooding
     std::vector<std::vector<int>> loopColor_;        ///< per cell and loop position, at its last flooding
     std::vector<std::vector<double>> loopDistance_;  ///< (empty: not flooded yet)
+    std::vector<std::vector<QueueItem>> queues_;     ///< per thread, a min-heap kept to reuse its storage
 
     /// A vertex off its cell's loop has all its faces in that cell: the cell is a disc.
     void FindInteriors()
     {
         interiorOf_.assign(s_.VertexCount(), -1);
-        ProgressCounter progress;
-        for (int v = 0; v < s_.VertexCount(); ++v, progress.Count())
-            for (int k = s_.vertexFaceOffset[v]; k < s_.vertexFaceOffset[v + 1]; ++k)
-                interiorOf_[v] = s_.faceCell[s_.vertexFaces[k]];
+        ForEachChunk(size_t(s_.VertexCount()), [&](int, size_t begin, size_t end) {
+            for (size_t v = begin; v < end; ++v)
+                for (int k = s_.vertexFaceOffset[v]; k < s_.vertexFaceOffset[v + 1]; ++k)
+                    interiorOf_[v] = s_.faceCell[s_.vertexFaces[k]];
+        });
         for (const std::vector<int> &loop : s_.cellLoop)
             for (int v : loop) interiorOf_[v] = -1;
         detail::BuildOffsets(interiorOf_, s_.CellCount(), interiorOffset_, interior_);
@@ -229,10 +291,10 @@ private:
         }
     }
 
-    void Push(int v)
+    void Push(std::vector<QueueItem> &queue, int v)
     {
-        queue_.push_back({distance_[v], v});
-        std::push_heap(queue_.begin(), queue_.end(), std::greater<QueueItem>());
+        queue.push_back({distance_[v], v});
+        std::push_heap(queue.begin(), queue.end(), std::greater<QueueItem>());
     }
 
     /// Colours cell c for `anchors`: its loop, then its interior from the loop, anew or as an
@@ -246,12 +308,13 @@ private:
         const bool fresh = lastColor.empty();
         lastColor.resize(loop.size());
         lastDistance.resize(loop.size());
-        queue_.clear();
+        std::vector<QueueItem> &queue = queues_[ThreadIndex()];
+        queue.clear();
         for (size_t k = 0; k < loop.size(); ++k) {
             const int v = loop[k];
             if (fresh || lastColor[k] != color_[v] || lastDistance[k] != distance_[v]) {
                 changed_[v] = 1;
-                Push(v);
+                Push(queue, v);
             }
             lastColor[k] = color_[v];
             lastDistance[k] = distance_[v];
@@ -269,16 +332,16 @@ private:
             if (color_[v] >= 0) continue;
             for (int e = edges.offset[v]; e < edges.offset[v + 1]; ++e) {
                 const int u = edges.to[e];
-                if (color_[u] >= 0 && (interiorOf_[u] == c || !changed_[u])) Push(u);
+                if (color_[u] >= 0 && (interiorOf_[u] == c || !changed_[u])) Push(queue, u);
             }
         }
         for (int v : loop) changed_[v] = 0;
 
         const std::greater<QueueItem> later;
-        while (!queue_.empty()) {
-            std::pop_heap(queue_.begin(), queue_.end(), later);
-            const auto [d, u] = queue_.back();
-            queue_.pop_back();
+        while (!queue.empty()) {
+            std::pop_heap(queue.begin(), queue.end(), later);
+            const auto [d, u] = queue.back();
+            queue.pop_back();
             if (d != distance_[u] || color_[u] < 0) continue;  // stale entry, or a loop without anchors
             const int uRoot = interiorOf_[u] == c ? root_[u] : u;
             const Point3d &pu = s_.positions[u];
@@ -299,7 +362,7 @@ private:
                 distance_[w] = nd;
                 parent_[w] = u;
                 root_[w] = uRoot;
-                Push(w);
+                Push(queue, w);
             }
         }
     }
@@ -472,14 +535,14 @@ private:
 
 /// Triangulates one cell's anchor polygon (anchor indices in loop order, cell on the left)
 /// and records its faces in `registry`. The chords must already be in the registry; the
-/// fan's extra vertex, if needed, gets index `nextVertex`.
+/// fan's extra vertex, if needed, gets index `nextVertex`. `triples`: the cell's
+/// CellFlooding::Triples, of `flooding`, which also gives the fan its vertex.
 inline CellTriangulation TriangulateCell(const MeshingSurface &s, int c, const std::vector<int> &polygon,
                                          const std::vector<Point3d> &anchorPositions, const Proxy &proxy,
-                                         const AnchorSet &anchors, CellFlooding &flooding, OutputRegistry &registry,
-                                         int nextVertex)
+                                         const AnchorSet &anchors, const std::vector<std::array<int, 3>> &triples,
+                                         CellFlooding &flooding, OutputRegistry &registry, int nextVertex)
 {
     CellTriangulation result;
-    const std::vector<std::array<int, 3>> triples = flooding.Triples(c, anchors);
 
     // The plane to clip on: the cell's own area-weighted normal, which follows the input's
     // orientation (an L2 proxy normal may point either way); the proxy's if the cell folds
@@ -510,7 +573,7 @@ inline CellTriangulation TriangulateCell(const MeshingSurface &s, int c, const s
             return worst;
         };
         double bestQuality = -1;
-        for (int v : flooding.VerticesDeepestFirst(c)) {
+        for (int v : flooding.VerticesDeepestFirst(c, anchors)) {
             const double quality = fanQuality(s.positions[v]);
             if (quality > bestQuality) {
                 bestQuality = quality;

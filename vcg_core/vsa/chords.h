@@ -6,6 +6,7 @@
 #define VSA_CHORDS_H
 
 #include <vsa/meshing_surface.h>
+#include <vsa/parallel.h>
 #include <vsa/proxy.h>
 #include <vsa/surface_grid.h>
 #include <vsa/tuning.h>
@@ -140,12 +141,14 @@ inline RegionFits MeasureRegionFits(const MeshingSurface &s, const std::vector<P
 {
     RegionFits fits;
     fits.fit.assign(proxies.size(), 0);
-    ProgressCounter progress;
-    for (int f = 0; f < s.FaceCount(); ++f, progress.Count()) {
-        const int r = s.faceRegion[f];
-        for (int v : s.faces[f])
-            fits.fit[r] = std::max(fits.fit[r], std::abs((s.positions[v] - proxies[r].point) * proxies[r].normal));
-    }
+    const auto farther = [](double &fit, double other) { fit = std::max(fit, other); };
+    SumByKey(
+        size_t(s.FaceCount()), fits.fit, [&](size_t f) { return s.faceRegion[f]; },
+        [&](double &fit, size_t f) {
+            const Proxy &proxy = proxies[s.faceRegion[f]];
+            for (int v : s.faces[f]) farther(fit, std::abs((s.positions[v] - proxy.point) * proxy.normal));
+        },
+        farther);
     Box3d box;
     for (const Point3d &p : s.positions) box.Add(p);
     fits.diagonal = box.Diag();

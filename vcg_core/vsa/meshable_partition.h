@@ -153,34 +153,37 @@ inline void MeasureFacingAway(const MeshingSurface &s, const MeshingPass &pass, 
                               const SurfaceGrid &grid, SampledTriangles &sampled, RegionTrial &trial)
 {
     const int regionCount = int(trial.fault.size());
-    std::vector<double> area(regionCount, 0), away(regionCount, 0);
     const std::vector<int> repeats = RepeatedFaces(pass, degenerate, sampled.pass, sampled.degenerate);
     std::vector<uint8_t> awayBits(pass.triangles.size());
-    ProgressCounter progress;
-    int nearest = -1;  // the last sample's, a hint for the next: a cell's triangles come together
+    std::vector<int> fresh;  // the triangles to sample
+    for (size_t t = 0; t < pass.triangles.size(); ++t)
+        if (repeats[t] >= 0) awayBits[t] = sampled.awayBits[repeats[t]];
+        else fresh.push_back(int(t));
+    const auto corner = [&](int t, int i) -> const Point3d & { return pass.positions[pass.triangles[t][i]]; };
+    // One triangle at a time on every thread: a query is tens of microseconds on a large mesh.
+    const auto queries = [](int) { return 4 * kNearestFaceItems; };
+    ForEachGroup(int(fresh.size()), fresh.size() * queries(0), queries, [&](int k) {
+        const int t = fresh[k];
+        const Point3d &a = corner(t, 0), &b = corner(t, 1), &c = corner(t, 2);
+        const Point3d n = (b - a) ^ (c - a);
+        int bits = 0, sample = 0;
+        int nearest = -1;  // the last sample's, a hint for the next (the answer does not depend on it)
+        for (const Point3d &p :
+             {(a + b + c) / 3.0, (a * 4 + b + c) / 6.0, (a + b * 4 + c) / 6.0, (a + b + c * 4) / 6.0}) {
+            nearest = grid.NearestFace(p, nearest);
+            if (nearest >= 0 && s.DoubleAreaVector(nearest) * n < 0) bits |= 1 << sample;
+            ++sample;
+        }
+        awayBits[t] = uint8_t(bits);
+    });
+    std::vector<double> area(regionCount, 0), away(regionCount, 0);
     for (size_t t = 0; t < pass.triangles.size(); ++t) {
         const int r = s.cellRegion[pass.triangleCell[t]];
-        const Point3d &a = pass.positions[pass.triangles[t][0]], &b = pass.positions[pass.triangles[t][1]],
-                      &c = pass.positions[pass.triangles[t][2]];
-        const Point3d n = (b - a) ^ (c - a);
-        const double doubleArea = n.Norm();
+        const int i = int(t);
+        const double doubleArea = ((corner(i, 1) - corner(i, 0)) ^ (corner(i, 2) - corner(i, 0))).Norm();
         area[r] += doubleArea;
-        int bits = 0;
-        if (repeats[t] >= 0) {
-            bits = sampled.awayBits[repeats[t]];
-        } else {
-            progress.Count(4 * kNearestFaceItems);
-            int k = 0;
-            for (const Point3d &p :
-                 {(a + b + c) / 3.0, (a * 4 + b + c) / 6.0, (a + b * 4 + c) / 6.0, (a + b + c * 4) / 6.0}) {
-                nearest = grid.NearestFace(p, nearest);
-                if (nearest >= 0 && s.DoubleAreaVector(nearest) * n < 0) bits |= 1 << k;
-                ++k;
-            }
-        }
         for (int k = 0; k < 4; ++k)  // one sample at a time, so the sums round as they always did
-            if (bits >> k & 1) away[r] += doubleArea / 4;
-        awayBits[t] = uint8_t(bits);
+            if (awayBits[t] >> k & 1) away[r] += doubleArea / 4;
     }
     sampled.pass = MeshingPass();
     sampled.pass.positions = pass.positions;

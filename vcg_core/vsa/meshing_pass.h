@@ -84,16 +84,21 @@ inline bool SamePolygon(const MeshingPass &previous, const MeshingPass &pass, in
     return true;
 }
 
-/// Cell c's triangles of `previous` on the anchors of `pass`, when its polygon is the same in
-/// both (SamePolygon), they are on anchors only (no fan, no input faces) and they clash with
-/// nothing already in `registry`; else empty. Re-triangulating only the cells a repair changed
-/// keeps repair rounds cheap on big meshes.
+/// Whether cell c may keep its triangles of `previous` (see ReusableTriangles): its polygon is
+/// the same in both (SamePolygon), and they are on anchors only (no fan, no input faces).
+inline bool MayReuseTriangles(const MeshingPass *previous, const MeshingPass &pass, int c)
+{
+    return previous && previous->cellMethod[c] != CellMethod::SteinerFan &&
+           previous->cellMethod[c] != CellMethod::InputFaces && SamePolygon(*previous, pass, c);
+}
+
+/// Cell c's triangles of `previous` on the anchors of `pass`, when it may reuse them
+/// (MayReuseTriangles) and they clash with nothing already in `registry`; else empty.
+/// Re-triangulating only the cells a repair changed keeps repair rounds cheap on big meshes.
 inline std::vector<std::array<int, 3>> ReusableTriangles(const MeshingPass *previous, const MeshingPass &pass, int c,
                                                           const OutputRegistry &registry)
 {
-    if (!previous || previous->cellMethod[c] == CellMethod::SteinerFan ||
-        previous->cellMethod[c] == CellMethod::InputFaces || !SamePolygon(*previous, pass, c))
-        return {};
+    if (!MayReuseTriangles(previous, pass, c)) return {};
     const std::vector<int> &now = pass.polygons[c];
     OutputRegistry own;  // the polygon's edges are in the registry already, as they should be
     for (size_t k = 0; k < now.size(); ++k) own.AddEdge(now[k], now[(k + 1) % now.size()]);
@@ -196,9 +201,17 @@ MeshingPass RunMeshingPass(const MeshingSurface &s, const std::vector<Proxy> &pr
     // Then the cells kept as input faces: the others must triangulate around their edges too.
     for (int c = 0; c < s.CellCount(); ++c)
         if (inputCells[c]) KeepInputFaces<CoordType>(s, c, registry, pass);
+    // The cells to triangulate anew flood first, on every thread; a reusable cell whose triangles
+    // clash floods in turn below.
+    std::vector<int> fresh;
+    for (int c = 0; c < s.CellCount(); ++c)
+        if (!inputCells[c] && !MayReuseTriangles(previous, pass, c)) fresh.push_back(c);
+    std::vector<std::vector<std::array<int, 3>>> triples = flooding.TriplesOfCells(fresh, anchors);
+    std::vector<char> flooded(s.CellCount(), 0);
+    for (int c : fresh) flooded[c] = 1;
     ProgressCounter progress;
     for (int c = 0; c < s.CellCount(); ++c) {
-        progress.Count(s.CellFaceCount(c));
+        if (!flooded[c]) progress.Count(s.CellFaceCount(c));
         if (inputCells[c]) continue;
         std::vector<std::array<int, 3>> triangles = ReusableTriangles(previous, pass, c, registry);
         if (!triangles.empty()) {
@@ -206,8 +219,10 @@ MeshingPass RunMeshingPass(const MeshingSurface &s, const std::vector<Proxy> &pr
             pass.cellMethod[c] = previous->cellMethod[c];
             pass.cellNormal[c] = previous->cellNormal[c];
         } else {
+            if (!flooded[c]) triples[c] = flooding.Triples(c, anchors);
             CellTriangulation cell = TriangulateCell(s, c, pass.polygons[c], pass.positions, proxies[s.cellRegion[c]],
-                                                     anchors, flooding, registry, int(pass.positions.size()));
+                                                     anchors, triples[c], flooding, registry,
+                                                     int(pass.positions.size()));
             if (cell.steinerVertex >= 0) {
                 pass.positions.push_back(AsWritten<CoordType>(cell.steinerPosition));
                 pass.vertexSource.push_back(cell.steinerSourceVertex);

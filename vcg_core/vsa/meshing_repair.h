@@ -220,14 +220,23 @@ public:
         std::sort(freshFaces.begin(), freshFaces.end());  // tested in face order, as they always were
         if (!freshFaces.empty() && !grid_)
             grid_ = std::make_unique<SurfaceGrid>(in_.positions, in_.faces, Degenerate(), PairGridMargin(in_, 0));
-        std::vector<int> metFrom(freshFaces.empty() ? 0 : in_.FaceCount(), -1);
-        for (int f : freshFaces) {
-            progress.Count();
-            if (degenerate_[f]) continue;
-            ForEachIntersectingFace(
-                in_, *grid_, f, metFrom, [&](int g) { return fresh[g] && g < f; },  // tested from g
-                [&](int g) { intersecting_[f] = intersecting_[g] = 1; });
-        }
+        // Chunks of the fresh faces on every thread, each thread with its own record of the faces
+        // met (see ForEachIntersectingFace); each chunk lists the pairs it found.
+        std::vector<std::vector<int>> metFrom(MaxThreads());
+        std::vector<std::vector<std::pair<int, int>>> pairs(ChunkCount(freshFaces.size()));
+        ForEachChunk(freshFaces.size(), [&](int chunk, size_t begin, size_t end) {
+            std::vector<int> &met = metFrom[ThreadIndex()];
+            met.resize(in_.FaceCount(), -1);
+            for (size_t k = begin; k < end; ++k) {
+                const int f = freshFaces[k];
+                if (degenerate_[f]) continue;
+                ForEachIntersectingFace(
+                    in_, *grid_, f, met, [&](int g) { return fresh[g] && g < f; },  // tested from g
+                    [&](int g) { pairs[chunk].emplace_back(f, g); });
+            }
+        });
+        for (const auto &chunkPairs : pairs)
+            for (const auto &[f, g] : chunkPairs) intersecting_[f] = intersecting_[g] = 1;
         return CellsWithFacesFlagged(s, cells, intersecting_);
     }
 

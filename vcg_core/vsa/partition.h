@@ -125,22 +125,24 @@ public:
         std::vector<FloodCandidate> &b = buckets_[rank];
         if (to.empty()) to.swap(b);  // keeps both arrays' memory in use: no copy, no allocation
         else to.insert(to.end(), b.begin(), b.end());
-        b.clear();
-        words_[rank >> 6] &= ~(uint64_t(1) << (rank & 63));
-        if (!words_[rank >> 6]) summary_ &= ~(uint64_t(1) << (rank >> 6));
+        Forget(rank);
     }
 
     /// Forgets every candidate (those a flood stopped early left behind).
     void Clear()
     {
-        for (Rank rank = Lowest(); rank != FloodRanks::kNoRank; rank = Lowest()) {
-            buckets_[rank].clear();
-            words_[rank >> 6] &= ~(uint64_t(1) << (rank & 63));
-            if (!words_[rank >> 6]) summary_ &= ~(uint64_t(1) << (rank >> 6));
-        }
+        for (Rank rank = Lowest(); rank != FloodRanks::kNoRank; rank = Lowest()) Forget(rank);
     }
 
 private:
+    /// Empties `rank`'s bucket and clears its bit, and its word's summary bit once the word is empty.
+    void Forget(Rank rank)
+    {
+        buckets_[rank].clear();
+        words_[rank >> 6] &= ~(uint64_t(1) << (rank & 63));
+        if (!words_[rank >> 6]) summary_ &= ~(uint64_t(1) << (rank >> 6));
+    }
+
     static_assert(FloodRanks::kRanks / 64 <= 64, "one summary word must cover every word of ranks");
 
     static int LowestBit(uint64_t x)  // x != 0

@@ -17,6 +17,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <limits>
+#include <numeric>
 #include <utility>
 #include <vector>
 
@@ -54,41 +55,50 @@ public:
                 const std::vector<char> &skip = {}, double margin = 0)
         : positions_(positions), faces_(faces), margin_(margin)
     {
-        size_t inGrid = 0;
-        ProgressCounter progress;
-        for (int f = 0; f < int(faces.size()); ++f) {
-            progress.Count();
-            if (!skip.empty() && skip[f]) continue;
-            box_.Add(FaceBox(f));
-            ++inGrid;
-        }
+        // The box and the faces' cells on every thread, chunk by chunk; the cells' face lists
+        // list faces in face order, as one thread would.
+        const auto inGrid = [&](size_t f) { return skip.empty() || !skip[f]; };
+        struct Extent
+        {
+            Box3d box;
+            size_t faces = 0;
+        };
+        std::vector<Extent> extent(1);
+        SumByKey(
+            faces.size(), extent, [&](size_t f) { return inGrid(f) ? 0 : -1; },
+            [&](Extent &e, size_t f) { e.box.Add(FaceBox(int(f))), ++e.faces; },
+            [](Extent &e, const Extent &part) { e.box.Add(part.box), e.faces += part.faces; });
+        box_ = extent[0].box;
         cellOffset_.assign(2, 0);  // one empty cell, unless there is something to bucket
         if (box_.IsNull()) return;
         box_.Offset(GridPadding(box_));
-        Point3d extent = box_.Dim();
-        const double longest = std::max({extent[0], extent[1], extent[2]});
+        Point3d size = box_.Dim();
+        const double longest = std::max({size[0], size[1], size[2]});
         if (std::isfinite(longest)) {  // a box beyond the double range keeps one cell
             // vcglib's BestDim divides the cell count by products of the extents, which overflow
             // or vanish far from 1: there it gets them relative to the longest, in proportion.
-            if (longest > 1e100 || longest < 1e-100) extent /= longest;
-            BestDim<double>(std::max<size_t>(inGrid, 1), extent, dim_);
+            if (longest > 1e100 || longest < 1e-100) size /= longest;
+            BestDim<double>(std::max<size_t>(extent[0].faces, 1), size, dim_);
         }
         for (int i = 0; i < 3; ++i) {
             dim_[i] = std::max(dim_[i], 1);
             cellSize_[i] = box_.Dim()[i] / dim_[i];
         }
-        std::vector<int> cellOfEntry, faceOfEntry;
-        for (int f = 0; f < int(faces.size()); ++f) {
-            progress.Count();
-            if (skip.empty() || !skip[f]) CellsCrossedBy(f, [&](int cell) {
-                cellOfEntry.push_back(cell);
-                faceOfEntry.push_back(f);
-            });
-        }
-        detail::BuildOffsets(cellOfEntry, dim_[0] * dim_[1] * dim_[2], cellOffset_, cellFaces_);
-        for (int &entry : cellFaces_) {
-            entry = faceOfEntry[entry];
-            progress.Count();
+        std::vector<std::vector<std::pair<int, int>>> entries(ChunkCount(faces.size()));  // (cell, face)
+        ForEachChunk(faces.size(), [&](int chunk, size_t begin, size_t end) {
+            for (size_t f = begin; f < end; ++f)
+                if (inGrid(f)) CellsCrossedBy(int(f), [&](int cell) { entries[chunk].emplace_back(cell, int(f)); });
+        });
+        cellOffset_.assign(size_t(dim_[0]) * dim_[1] * dim_[2] + 1, 0);
+        for (const auto &chunk : entries)
+            for (const auto &entry : chunk) ++cellOffset_[size_t(entry.first) + 1];
+        std::partial_sum(cellOffset_.begin(), cellOffset_.end(), cellOffset_.begin());
+        cellFaces_.resize(size_t(cellOffset_.back()));
+        std::vector<int> fill(cellOffset_.begin(), cellOffset_.end() - 1);
+        ProgressCounter progress;
+        for (auto &chunk : entries) {
+            for (const auto &[cell, f] : chunk) cellFaces_[fill[cell]++] = f, progress.Count();
+            std::vector<std::pair<int, int>>().swap(chunk);  // the lists grow as the chunks go
         }
     }
 
