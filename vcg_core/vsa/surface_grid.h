@@ -96,10 +96,8 @@ public:
         cellFaces_.resize(size_t(cellOffset_.back()));
         std::vector<int> fill(cellOffset_.begin(), cellOffset_.end() - 1);
         ProgressCounter progress;
-        for (auto &chunk : entries) {
+        for (const auto &chunk : entries)
             for (const auto &[cell, f] : chunk) cellFaces_[fill[cell]++] = f, progress.Count();
-            std::vector<std::pair<int, int>>().swap(chunk);  // the lists grow as the chunks go
-        }
     }
 
     /// Calls visit(cell index) for each cell that face f is in, or would be in if the grid
