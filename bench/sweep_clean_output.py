@@ -296,6 +296,8 @@ def main():
     parser.add_argument("--k", help="comma-separated proxy counts (default %s)" % ",".join(map(str, KS)))
     parser.add_argument("--init", help="comma-separated seedings (default %s)" % ",".join(INITS))
     parser.add_argument("--tools", default="ours,cgal,qecd")
+    parser.add_argument("--ours-args", default="",
+                        help="more vsa-bench options for ours, as one string, e.g. '--max-proxy-factor 100'")
     parser.add_argument("--iterations", type=int, default=30)
     parser.add_argument("--seed", type=int, default=1)
     parser.add_argument("--timeout-ours", type=int, default=600, help="seconds")
@@ -352,7 +354,8 @@ def main():
                                 input=input_record)
                     common = ["--mesh", path, "--k", str(k), "--init", init, "--iterations", str(args.iterations),
                               "--seed", str(args.seed)]
-                    for tool, binary, extra, timeout in [("ours", ours, ["--polygonal", "1"], args.timeout_ours),
+                    for tool, binary, extra, timeout in [("ours", ours, ["--polygonal", "1"] + args.ours_args.split(),
+                                                          args.timeout_ours),
                                                          ("cgal", cgal, [], args.timeout_cgal)]:
                         if tool not in tools or not binary:
                             continue

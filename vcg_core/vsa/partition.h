@@ -90,6 +90,16 @@ struct FloodCandidate
     int region;
 };
 
+/// Moves `from`'s items to the end of `to` and leaves `from` empty. When `to` is empty the two
+/// swap, which keeps both arrays' memory in use: no copy, no allocation.
+template <class T>
+void AppendAndEmpty(std::vector<T> &from, std::vector<T> &to)
+{
+    if (to.empty()) to.swap(from);
+    else to.insert(to.end(), from.begin(), from.end());
+    from.clear();
+}
+
 /// Flood candidates waiting for their rank: an array per rank, in push order, and a bit per rank
 /// that holds any, so that the lowest is found in two word scans.
 class RankBuckets
@@ -122,9 +132,7 @@ public:
     void MoveOut(Rank rank, std::vector<FloodCandidate> &to)
     {
         if (!(words_[rank >> 6] >> (rank & 63) & 1)) return;
-        std::vector<FloodCandidate> &b = buckets_[rank];
-        if (to.empty()) to.swap(b);  // keeps both arrays' memory in use: no copy, no allocation
-        else to.insert(to.end(), b.begin(), b.end());
+        AppendAndEmpty(buckets_[rank], to);
         Forget(rank);
     }
 
@@ -262,7 +270,8 @@ inline uint32_t FloodKey(FloodRanks::Rank rank, uint32_t wave)
 }
 
 /// Lowers `word` to `value` when that is smaller and returns the value it had, atomically when
-/// `kShared` (other threads lower it at the same time).
+/// `kShared` (other threads lower it at the same time). Written with the compilers' builtins
+/// because std::atomic_ref is C++20 and the plugin builds as C++17 for MeshLab 2020.09.
 template <bool kShared, class T>
 T LowerTo(T &word, T value)
 {
@@ -366,16 +375,11 @@ private:
     /// Candidates per piece of a wave handed to a thread: a few microseconds of work each.
     static constexpr int kWavePiece = 512;
 
-    /// Gathers the candidates the last wave queued for the next one; false when there are none.
-    bool TakeNextWave()
+    /// Gathers the candidates the last wave queued for the next one.
+    void TakeNextWave()
     {
         ws_.wave.clear();
-        for (FloodLane &lane : ws_.lanes) {
-            if (ws_.wave.empty()) ws_.wave.swap(lane.next);
-            else ws_.wave.insert(ws_.wave.end(), lane.next.begin(), lane.next.end());
-            lane.next.clear();
-        }
-        return !ws_.wave.empty();
+        for (FloodLane &lane : ws_.lanes) AppendAndEmpty(lane.next, ws_.wave);
     }
 
     /// Labels the free faces of the wave's candidates, each with the lowest region offered it
