@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <limits>
 #include <memory>
 #include <random>
 #include <string>
@@ -115,7 +116,38 @@ TEST(MeshablePartition, KPrimeStaysWithinItsCap)
     EXPECT_GT(r.meshing.regionsCut, 0);
     EXPECT_TRUE(r.meshing.validity.IsValid()) << r.meshing.validity.Summary();
     EXPECT_GT(r.meshable.regionsLeft, 0);
-    EXPECT_NE(r.meshable.Summary().find("still do not mesh as one planar polygon"), std::string::npos);
+    EXPECT_TRUE(r.meshable.capped);
+    EXPECT_NE(r.meshable.Summary().find("still do not mesh as one planar polygon (k' at its limit, 8)"),
+              std::string::npos) << r.meshable.Summary();
+}
+
+/// No limit (0): the splits go on until every region meshes as one polygon, so the meshing
+/// cuts nothing; where the limit stopped them (see KPrimeStaysWithinItsCap) it did.
+TEST(MeshablePartition, NoLimitSplitsUntilEveryRegionIsOnePolygon)
+{
+    TMesh box, out;
+    vsa_test::MakeBoxWithHole(box, 16);
+    const ShapeApproximationResult r = Approximate(box, out, 4, true, 0);
+    ASSERT_TRUE(r.ok) << r.error;
+    EXPECT_GT(r.meshable.proxiesFinal, 8);
+    EXPECT_EQ(r.meshable.regionsLeft, 0);
+    EXPECT_FALSE(r.meshable.capped);
+    EXPECT_EQ(r.meshing.regionsCut, 0);
+    EXPECT_TRUE(r.meshing.validity.IsValid()) << r.meshing.validity.Summary();
+    EXPECT_EQ(r.meshable.Summary().find("still do not mesh"), std::string::npos) << r.meshable.Summary();
+}
+
+/// A limit that is not a finite number >= 0 is refused before any work, with the reason.
+TEST(MeshablePartition, BadLimitIsRefused)
+{
+    TMesh box, out;
+    vsa_test::MakeBoxWithHole(box, 16);
+    for (double limit : {-1.0, std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity()}) {
+        const ShapeApproximationResult r = Approximate(box, out, 4, true, limit);
+        EXPECT_FALSE(r.ok) << limit;
+        EXPECT_NE(r.error.find("The limit on the regions must be a finite number"), std::string::npos) << r.error;
+        EXPECT_EQ(out.FN(), 0) << limit;
+    }
 }
 
 /// The trials relabel one surface round after round (AssignRegions keeps the cells of the

@@ -14,9 +14,11 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <memory>
 #include <optional>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 #include <utility>
 #include <vector>
@@ -31,7 +33,8 @@ struct MeshablePartitionParam
     /// exactly the k asked for and leaves the defects to the meshing's repairs.
     bool enabled = true;
     /// k' stays at most this times k (and at least k + 1): a shape that needs more than that is
-    /// left to the meshing's repairs, so that asking for k never gives wildly more.
+    /// left to the meshing's repairs, so that asking for k never gives wildly more. 0: no cap,
+    /// k' grows as far as one clean polygon per region needs (bench/README.md, "The limit on k'").
     double maxProxyFactor = 2;
     /// Rounds of meshing, testing and splitting at most; each costs one meshing pass.
     int maxRounds = 8;
@@ -54,6 +57,7 @@ struct MeshablePartitionReport
     /// Splits per fault (see RegionFault), indexed by the fault.
     std::array<int, 6> splits{};
     int regionsLeft = 0;  ///< regions still at fault when the cap on k' or on rounds was reached
+    bool capped = false;  ///< the cap on k' stopped the splits (else the rounds, if regions are left)
     /// The split partition's output was not valid and the partition as asked did better: it
     /// was kept, with k regions (see ApproximateShape).
     bool keptAsked = false;
@@ -77,10 +81,12 @@ struct MeshablePartitionReport
                 if (splits[f]) s << sep << kWhy[f] << ": " << splits[f], sep = ", ";
             s << ")";
         }
-        if (regionsLeft > 0)
-            s << (s.tellp() > 0 ? "; " : "") << regionsLeft
-              << " regions still do not mesh as one planar polygon (k' capped at " << proxiesFinal
-              << "): the meshing repairs them";
+        if (regionsLeft > 0) {
+            s << (s.tellp() > 0 ? "; " : "") << regionsLeft << " regions still do not mesh as one planar polygon (";
+            if (capped) s << "k' at its limit, " << proxiesFinal;
+            else s << "after " << rounds << " rounds of splits";
+            s << "): the meshing cuts them into pieces";
+        }
         return s.str();
     }
 };
@@ -390,6 +396,18 @@ inline std::vector<int> RegionsToSplit(const RegionTrial &trial, const Partition
 
 }  // namespace detail
 
+/// Throws std::invalid_argument, with a message meant for the user, when `param` is out of range.
+inline void CheckMeshablePartitionParam(const MeshablePartitionParam &param)
+{
+    if (!(param.maxProxyFactor >= 0 && param.maxProxyFactor < std::numeric_limits<double>::infinity()))
+        throw std::invalid_argument(
+            "The limit on the regions must be a finite number of times k, >= 0 (0 = no limit).");
+    if (param.maxRounds < 0) throw std::invalid_argument("The rounds of region splits cannot be negative.");
+    if (param.lloydIterations < 0) throw std::invalid_argument("The number of iterations cannot be negative.");
+    if (!(param.strayFactor >= 0 && param.strayFactor < std::numeric_limits<double>::infinity()))
+        throw std::invalid_argument("The stray factor must be a finite number >= 0.");
+}
+
 /// Splits the regions of `approximation` that do not mesh as one clean planar polygon (see
 /// detail::TrialMeshRegions), each at its input face farthest from its triangulation, with
 /// Lloyd iterations confined to it (Approximation::Split), and tests again, until every
@@ -406,10 +424,14 @@ MeshablePartitionReport MakePartitionMeshable(Approximation &approximation, cons
     if (start) start->surface.reset(), start->flooding.reset();
     MeshablePartitionReport report;
     report.proxiesRequested = report.proxiesFinal = approximation.ProxyCount();
+    CheckMeshablePartitionParam(param);
     if (!param.enabled) return report;
-    const int cap = std::max(report.proxiesRequested + 1, int(param.maxProxyFactor * report.proxiesRequested));
-    ProgressStage progress(cb, "VSA: splitting regions that do not mesh as one polygon");
     const double faces = approximation.Mesh().FaceCount();
+    const int cap = int(param.maxProxyFactor == 0
+                            ? faces
+                            : std::min(faces, std::max(report.proxiesRequested + 1.0,
+                                                       std::floor(param.maxProxyFactor * report.proxiesRequested))));
+    ProgressStage progress(cb, "VSA: splitting regions that do not mesh as one polygon");
     progress.Step(0, detail::kTrialSetupEnd, detail::kTrialSetupItems * faces);
     detail::TrialSetup<CoordType> input(approximation.Mesh(), meshing);
     for (int round = 0;; ++round) {
@@ -422,6 +444,7 @@ MeshablePartitionReport MakePartitionMeshable(Approximation &approximation, cons
         const int room = std::min(int(regions.size()), cap - approximation.ProxyCount());
         if (regions.empty() || round == param.maxRounds || room <= 0) {
             report.regionsLeft = int(regions.size());
+            report.capped = !regions.empty() && room <= 0;
             break;
         }
         // Split in region order, so that the new regions' indices do not depend on the ranking's ties.
