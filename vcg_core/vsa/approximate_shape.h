@@ -208,7 +208,7 @@ ShapeApproximationResult ApproximateShape(const InMeshType &in, OutMeshType &out
     ShapeApproximationResult result;
     try {
         RequireTriangularMesh(in);
-        CheckMeshablePartitionParam(param.meshable);  // before any work, as the partition's are
+        CheckMeshablePartitionParam(param.meshable);  // else a bad value would show only after the iterations
         if (in.VN() == 0 && in.FN() == 0) {
             result.error = "The mesh is empty.";
             return result;

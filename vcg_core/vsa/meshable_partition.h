@@ -403,7 +403,8 @@ inline void CheckMeshablePartitionParam(const MeshablePartitionParam &param)
         throw std::invalid_argument(
             "The limit on the regions must be a finite number of times k, >= 0 (0 = no limit).");
     if (param.maxRounds < 0) throw std::invalid_argument("The rounds of region splits cannot be negative.");
-    if (param.lloydIterations < 0) throw std::invalid_argument("The number of iterations cannot be negative.");
+    if (param.lloydIterations < 0)
+        throw std::invalid_argument("The Lloyd iterations after each round of splits cannot be negative.");
     if (!(param.strayFactor >= 0 && param.strayFactor < std::numeric_limits<double>::infinity()))
         throw std::invalid_argument("The stray factor must be a finite number >= 0.");
 }
@@ -427,10 +428,9 @@ MeshablePartitionReport MakePartitionMeshable(Approximation &approximation, cons
     CheckMeshablePartitionParam(param);
     if (!param.enabled) return report;
     const double faces = approximation.Mesh().FaceCount();
-    const int cap = int(param.maxProxyFactor == 0
-                            ? faces
-                            : std::min(faces, std::max(report.proxiesRequested + 1.0,
-                                                       std::floor(param.maxProxyFactor * report.proxiesRequested))));
+    const double k = report.proxiesRequested;
+    const double asked = param.maxProxyFactor == 0 ? faces : std::max(k + 1, std::floor(param.maxProxyFactor * k));
+    const int cap = int(std::min(faces, asked));  // in double: a huge factor must not overflow an int
     ProgressStage progress(cb, "VSA: splitting regions that do not mesh as one polygon");
     progress.Step(0, detail::kTrialSetupEnd, detail::kTrialSetupItems * faces);
     detail::TrialSetup<CoordType> input(approximation.Mesh(), meshing);
