@@ -11,8 +11,10 @@
 #include <algorithm>
 #include <limits>
 #include <memory>
+#include <optional>
 #include <random>
 #include <string>
+#include <tuple>
 #include <vector>
 
 namespace {
@@ -206,19 +208,29 @@ TEST(MeshablePartition, TrialsInTurnJudgeAsTrialsAfresh)
     int kept = 0;  // triangles whose facing-away samples a trial took from the one before
     for (int round = 0; round < 4; ++round) {
         const Partition &partition = approximation.CurrentPartition();
-        const detail::SampledTriangles previous = inTurn.sampled;
+        std::optional<detail::CheckedPass> previous;
+        if (inTurn.latest) previous = detail::CheckedPass{inTurn.latest->Best().pass, inTurn.defects, inTurn.clearance};
         const detail::RegionTrial a = detail::TrialMeshRegions<vcg::Point3f>(inTurn, partition, meshable);
-        // Every triangle's samples are kept for the next trial, and after the splits some are
-        // taken from the last one's instead of measured again.
+        // Every triangle's samples and defects are kept for the next trial, and after the splits
+        // some are taken from the last one's instead of measured again.
         const detail::MeshingPass &pass = inTurn.latest->Best().pass;
-        EXPECT_EQ(inTurn.sampled.pass.triangles, pass.triangles) << "round " << round;
-        EXPECT_EQ(inTurn.sampled.awayBits.size(), pass.triangles.size()) << "round " << round;
-        for (int repeat : detail::RepeatedFaces(pass, inTurn.sampled.degenerate, previous.pass, previous.degenerate))
-            kept += repeat >= 0;
+        EXPECT_EQ(inTurn.awayBits.size(), pass.triangles.size()) << "round " << round;
+        EXPECT_EQ(inTurn.defects.degenerate.size(), pass.triangles.size()) << "round " << round;
+        if (previous)
+            for (int repeat :
+                 detail::RepeatedFaces(pass, inTurn.defects.degenerate, previous->pass, previous->defects.degenerate))
+                kept += repeat >= 0;
         detail::TrialSetup<vcg::Point3f> afresh(approximation.Mesh(), meshing);
         const detail::RegionTrial b = detail::TrialMeshRegions<vcg::Point3f>(afresh, partition, meshable);
         EXPECT_EQ(a.fault, b.fault) << "round " << round;
         EXPECT_EQ(a.facingAway, b.facingAway) << "round " << round;
+        EXPECT_EQ(inTurn.defects.intersections, afresh.defects.intersections) << "round " << round;
+        EXPECT_EQ(inTurn.defects.closePairs, afresh.defects.closePairs) << "round " << round;
+        EXPECT_EQ(inTurn.defects.crossings.size(), afresh.defects.crossings.size()) << "round " << round;
+        for (size_t i = 0; i < std::min(inTurn.defects.crossings.size(), afresh.defects.crossings.size()); ++i) {
+            const auto &x = inTurn.defects.crossings[i], &y = afresh.defects.crossings[i];
+            EXPECT_EQ(std::make_tuple(x.cell, x.edge, x.otherEdge), std::make_tuple(y.cell, y.edge, y.otherEdge));
+        }
         EXPECT_EQ(inTurn.latest->Best().pass.positions, afresh.latest->Best().pass.positions) << "round " << round;
         EXPECT_EQ(inTurn.latest->Best().pass.triangles, afresh.latest->Best().pass.triangles) << "round " << round;
         const std::vector<int> regions = detail::RegionsToSplit(a, partition);
@@ -251,19 +263,24 @@ TEST(MeshablePartition, MeshingFromTheLastTrialIsTheSame)
     const Partition &partition = approximation.CurrentPartition();
     const int regionCount = int(partition.proxies.size());
     EXPECT_TRUE(IsLabelledAs(*start.surface, partition.faceRegion, regionCount));
-    MeshingStart mislabelled{std::make_shared<MeshingSurface>(*start.surface), start.flooding};
+    ASSERT_TRUE(start.checked);
+    MeshingStart mislabelled{std::make_shared<MeshingSurface>(*start.surface), start.flooding, start.checked};
     mislabelled.surface->faceRegion.back() = (mislabelled.surface->faceRegion.back() + 1) % regionCount;
     EXPECT_FALSE(IsLabelledAs(*mislabelled.surface, partition.faceRegion, regionCount));
-    MeshingStart otherSurface{std::make_shared<MeshingSurface>(*start.surface), start.flooding};
+    MeshingStart otherSurface{std::make_shared<MeshingSurface>(*start.surface), start.flooding, start.checked};
+    detail::CheckedPass doubled = *start.checked;
+    doubled.clearance *= 2;
+    MeshingStart otherClearance{start.surface, start.flooding, doubled};
 
-    TMesh fresh, started, notUsed, notFlooded;
+    TMesh fresh, started, notUsed, notFlooded, notChecked;
     const IndexedMesh &mesh = approximation.Mesh();
     ASSERT_TRUE(BuildApproximatingMesh(mesh, partition, meshing, fresh).ok);
     ASSERT_TRUE(BuildApproximatingMesh(mesh, partition, meshing, started, nullptr, std::move(start)).ok);
     ASSERT_TRUE(BuildApproximatingMesh(mesh, partition, meshing, notUsed, nullptr, std::move(mislabelled)).ok);
     ASSERT_TRUE(BuildApproximatingMesh(mesh, partition, meshing, notFlooded, nullptr, std::move(otherSurface)).ok);
+    ASSERT_TRUE(BuildApproximatingMesh(mesh, partition, meshing, notChecked, nullptr, std::move(otherClearance)).ok);
     const IndexedMesh expected = BuildIndexedMesh(fresh);
-    for (const TMesh *out : {&started, &notUsed, &notFlooded}) {
+    for (const TMesh *out : {&started, &notUsed, &notFlooded, &notChecked}) {
         const IndexedMesh got = BuildIndexedMesh(*out);
         EXPECT_EQ(got.positions, expected.positions);
         EXPECT_EQ(got.faces, expected.faces);

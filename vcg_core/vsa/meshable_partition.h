@@ -101,26 +101,20 @@ struct RegionTrial
     std::vector<double> facingAway;  ///< per region, the share of its triangles' area that faces away
 };
 
-/// The latest trial's triangles, to be found again in the next (see RepeatedFaces): a region
-/// that the splits and its neighbours' splits left alone keeps its triangles from one trial to
-/// the next, and their facing-away samples need no grid queries again.
-struct SampledTriangles
-{
-    MeshingPass pass;  ///< only what RepeatedFaces reads: positions, vertexSource and triangles
-    std::vector<char> degenerate;  ///< per triangle, DegenerateFaceMask
-    std::vector<uint8_t> awayBits;  ///< per triangle, which of its four samples face away
-};
-
 /// What every round's trial meshing shares, set up once: the meshing surface, whose regions and
 /// cells alone change from round to round (see AssignRegions), its faces in a grid (for the
-/// facing-away and the gap tests), and the input's own intersections. The
-/// latest trial's mesher is kept to lend its flooding to the next: a cell that the splits did
-/// not change keeps its colours (see CellFlooding). It refers to its own surface, so there are
-/// two, relabelled in turn.
+/// facing-away and the gap tests), and the input's own intersections. The latest trial's
+/// mesher is kept to lend its flooding to the next (a cell that the splits did not change keeps
+/// its colours, see CellFlooding), and its triangles, their defects and facing-away samples to
+/// be found again in the next (see RepeatedFaces): a region that the splits and its neighbours'
+/// splits left alone keeps its triangles, which need no tests again. The mesher refers to its
+/// own surface, so there are two, relabelled in turn.
 template <class CoordType>
 struct TrialSetup
 {
-    TrialSetup(const IndexedMesh &in, const MeshingParam &meshing) : intersections(in), once(meshing)
+    TrialSetup(const IndexedMesh &in, const MeshingParam &meshing)
+        : intersections(in), once(meshing),
+          clearance(SavedCoordinateClearance<typename CoordType::ScalarType>(in.positions))
     {
         once.repairRounds = once.halvingRounds = 0;
         // The trials judge the regions; planarizing moves anchors by a small part of their
@@ -138,6 +132,9 @@ struct TrialSetup
 
     InputIntersections intersections;
     MeshingParam once;  ///< the meshing's, without repairs
+    /// The final meshing's (see BuildApproximatingMesh): the trials' close pairs are ignored, but
+    /// found alike, so that the meshing can take the last trial's defects as its own.
+    double clearance;
     /// The second is copied from the first in the second trial. Shared, so that the last one
     /// can be handed to the meshing with the floodings that refer to it (see MeshingStart).
     std::array<std::shared_ptr<MeshingSurface>, 2> surfaces;
@@ -147,23 +144,28 @@ struct TrialSetup
     std::array<std::vector<Proxy>, 2> proxies;  ///< UsableProxies of each surface's regions
     std::unique_ptr<CellMesher<CoordType>> latest;
     int latestSurface = 1;  ///< the surface `latest` meshed, which the next trial leaves alone
-    SampledTriangles sampled;  ///< the latest trial's
+    PassDefects defects;    ///< of latest's pass
+    std::vector<uint8_t> awayBits;  ///< per triangle of latest's pass, which of its four samples face away
     int passes = 0;
 };
 
 /// Per region, the share of its triangles' area whose nearest input face (in `grid`, a face of
 /// `s`) points the other way (what shades dark where the input does not), from four
-/// samples per triangle. Triangles of `sampled` (the previous trial's) are not sampled again;
-/// `sampled` is left with this pass's triangles (`degenerate` their mask).
-inline void MeasureFacingAway(const MeshingSurface &s, const MeshingPass &pass, const std::vector<char> &degenerate,
-                              const SurfaceGrid &grid, SampledTriangles &sampled, RegionTrial &trial)
+/// samples per triangle. Triangles repeated from `previous` (the previous trial's pass, if any,
+/// with its faces' `wasDegenerate` and `wasAway` samples) are not sampled again. Returns the
+/// samples of `pass`'s triangles.
+inline std::vector<uint8_t> MeasureFacingAway(const MeshingSurface &s, const MeshingPass &pass,
+                                              const std::vector<char> &degenerate, const SurfaceGrid &grid,
+                                              const MeshingPass *previous, const std::vector<char> &wasDegenerate,
+                                              const std::vector<uint8_t> &wasAway, RegionTrial &trial)
 {
     const int regionCount = int(trial.fault.size());
-    const std::vector<int> repeats = RepeatedFaces(pass, degenerate, sampled.pass, sampled.degenerate);
     std::vector<uint8_t> awayBits(pass.triangles.size());
     std::vector<int> fresh;  // the triangles to sample
+    const std::vector<int> repeats =
+        previous ? RepeatedFaces(pass, degenerate, *previous, wasDegenerate) : std::vector<int>();
     for (size_t t = 0; t < pass.triangles.size(); ++t)
-        if (repeats[t] >= 0) awayBits[t] = sampled.awayBits[repeats[t]];
+        if (previous && repeats[t] >= 0) awayBits[t] = wasAway[repeats[t]];
         else fresh.push_back(int(t));
     const auto corner = [&](int t, int i) -> const Point3d & { return pass.positions[pass.triangles[t][i]]; };
     // One triangle at a time on every thread: a query is tens of microseconds on a large mesh.
@@ -191,13 +193,8 @@ inline void MeasureFacingAway(const MeshingSurface &s, const MeshingPass &pass, 
         for (int k = 0; k < 4; ++k)  // one sample at a time, so the sums round as they always did
             if (awayBits[t] >> k & 1) away[r] += doubleArea / 4;
     }
-    sampled.pass = MeshingPass();
-    sampled.pass.positions = pass.positions;
-    sampled.pass.vertexSource = pass.vertexSource;
-    sampled.pass.triangles = pass.triangles;
-    sampled.degenerate = degenerate;
-    sampled.awayBits.swap(awayBits);
     for (int r = 0; r < regionCount; ++r) trial.facingAway[r] = area[r] > 0 ? away[r] / area[r] : 0;
+    return awayBits;
 }
 
 /// Distance from p to the nearest of triangles [first, last) of `order` in `pass`; or, as soon
@@ -349,14 +346,17 @@ RegionTrial TrialMeshRegions(TrialSetup<CoordType> &input, const Partition &part
     const std::vector<Proxy> &proxies = input.proxies[slot] = UsableProxies(s, partition.proxies);
     const MeshingParam &once = input.once;
     const RegionFits fits = MeasureRegionFits(s, proxies);
+    // The previous trial's mesher stays until this trial has taken what it can from its pass.
+    const std::unique_ptr<CellMesher<CoordType>> before = std::move(input.latest);
     input.latest = std::make_unique<CellMesher<CoordType>>(
         s, proxies, fits, once, 0,
         once.chordGapThreshold > 0 ? input.gapTest.get() : nullptr, input.intersections, input.passes, nullptr,
-        input.latest ? std::optional<CellFlooding>(std::move(input.latest->Flooding())) : std::nullopt);
+        before ? std::optional<CellFlooding>(std::move(before->Flooding())) : std::nullopt);
     input.latestSurface = slot;
     input.latest->Repair();
     const MeshingPass &pass = input.latest->Best().pass;
-    const PassDefects defects = FindDefects(pass, 0);
+    const MeshingPass *previous = before ? &before->Best().pass : nullptr;
+    PassDefects defects = FindDefects(pass, input.clearance, previous, previous ? &input.defects : nullptr);
 
     auto flag = [&](int region, RegionFault fault) { trial.fault[region] = std::max(trial.fault[region], fault); };
     if (param.strayFactor > 0) {
@@ -368,7 +368,8 @@ RegionTrial TrialMeshRegions(TrialSetup<CoordType> &input, const Partition &part
     for (int r : s.cellRegion) ++cells[r];
     for (int r = 0; r < regionCount; ++r)
         if (cells[r] > 1) flag(r, RegionFault::NotDisc);
-    MeasureFacingAway(s, pass, defects.degenerate, *input.grid, input.sampled, trial);
+    input.awayBits = MeasureFacingAway(s, pass, defects.degenerate, *input.grid, previous, input.defects.degenerate,
+                                       input.awayBits, trial);
     for (int r = 0; r < regionCount; ++r)
         if (trial.facingAway[r] > kFacingAwayShare) flag(r, RegionFault::FacesAway);
     for (const PassDefects::Crossing &crossing : defects.crossings) flag(s.cellRegion[crossing.cell], RegionFault::Folds);
@@ -377,6 +378,7 @@ RegionTrial TrialMeshRegions(TrialSetup<CoordType> &input, const Partition &part
     const std::vector<char> inputMeets = input.intersections.CellsAmong(s, meeting);
     for (int c = 0; c < s.CellCount(); ++c)
         if (meeting[c] && !inputMeets[c]) flag(s.cellRegion[c], RegionFault::Intersects);
+    input.defects = std::move(defects);
     return trial;
 }
 
@@ -415,8 +417,8 @@ inline void CheckMeshablePartitionParam(const MeshablePartitionParam &param)
 /// region passes, k' reaches its cap, or the rounds run out.
 ///
 /// `start`, if given, receives the last trial's surface, labelled with the final partition,
-/// and its cells' floodings, for BuildApproximatingMesh to start from (no surface when there
-/// was no trial).
+/// its cells' floodings and its checked pass, for BuildApproximatingMesh to start from (no
+/// surface when there was no trial).
 template <class CoordType>
 MeshablePartitionReport MakePartitionMeshable(Approximation &approximation, const MeshingParam &meshing,
                                               const MeshablePartitionParam &param, vcg::CallBackPos *cb = nullptr,
@@ -460,6 +462,7 @@ MeshablePartitionReport MakePartitionMeshable(Approximation &approximation, cons
     if (start && input.latest) {
         start->surface = input.surfaces[input.latestSurface];
         start->flooding.emplace(std::move(input.latest->Flooding()));
+        start->checked = detail::CheckedPass{input.latest->Best().pass, std::move(input.defects), input.clearance};
     }
     progress.Done();
     return report;

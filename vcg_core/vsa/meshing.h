@@ -75,11 +75,12 @@ public:
     const MeshingSurface &BestSurface() const { return *bestSurface_; }
     const typename Mesher::Attempt &Best() const { return best_->Best(); }
 
-    /// The first surface, meshed with repairs; `flooding`: its cells' floodings, if known.
-    void Repair(std::optional<CellFlooding> flooding)
+    /// The first surface, meshed with repairs; `flooding`: its cells' floodings, if known;
+    /// `earlier`: a pass on it, checked with this meshing's clearance, or nullptr.
+    void Repair(std::optional<CellFlooding> flooding, const CheckedPass *earlier)
     {
         best_ = MesherOf(*surface_, &progress_, std::move(flooding));
-        best_->Repair();
+        best_->Repair(earlier && earlier->clearance == clearance_ ? earlier : nullptr);
     }
 
     /// Where the output still intersects itself, the cells of the intersecting faces are halved
@@ -282,12 +283,15 @@ void WriteOutputMesh(const MeshingPass &pass, bool polygonal, OutMeshType &out)
 }  // namespace detail
 
 /// Where the meshing of a partition may start (see MakePartitionMeshable, whose last trial
-/// leaves it): a surface BuildMeshingSurface would build for it, and the floodings of that
-/// surface's cells, which the first pass updates instead of flooding every cell anew.
+/// leaves it): a surface BuildMeshingSurface would build for it, the floodings of that
+/// surface's cells, which the first pass updates instead of flooding every cell anew, and a
+/// pass on it with its defects, which the first pass repeats but for the anchors that
+/// planarizing moves: only the faces it does not repeat are tested again.
 struct MeshingStart
 {
     std::shared_ptr<MeshingSurface> surface;
     std::optional<CellFlooding> flooding;  ///< of `surface`'s cells, if known
+    std::optional<detail::CheckedPass> checked;  ///< a pass on `surface`, if known
 };
 
 /// Builds the approximating mesh of a partitioned mesh into `out` (cleared first).
@@ -302,7 +306,7 @@ struct MeshingStart
 ///
 /// `start`, if it has a surface, is where the meshing starts (see MeshingStart); a surface
 /// labelled otherwise than `partition` (IsLabelledAs), or floodings of another surface, are
-/// not used.
+/// not used, nor a pass checked with another clearance.
 template <class OutMeshType>
 MeshingReport BuildApproximatingMesh(const IndexedMesh &in, const Partition &partition, const MeshingParam &param,
                                      OutMeshType &out, vcg::CallBackPos *cb = nullptr, MeshingStart start = {})
@@ -319,6 +323,7 @@ MeshingReport BuildApproximatingMesh(const IndexedMesh &in, const Partition &par
     const int regionCount = int(partition.proxies.size());
     std::shared_ptr<MeshingSurface> surface = std::move(start.surface);
     if (!surface || !IsLabelledAs(*surface, partition.faceRegion, regionCount)) {
+        start.checked.reset();
         surface = std::make_shared<MeshingSurface>();
         if (!BuildMeshingSurface(in, partition.faceRegion, regionCount, *surface, report.error)) return report;
     }
@@ -331,7 +336,7 @@ MeshingReport BuildApproximatingMesh(const IndexedMesh &in, const Partition &par
     const double clearance = detail::SavedCoordinateClearance<typename OutMeshType::ScalarType>(in.positions);
     detail::SurfaceMeshing<typename OutMeshType::CoordType> meshing(in, surface, partition.proxies, param, clearance,
                                                                    report, progress);
-    meshing.Repair(std::move(start.flooding));
+    meshing.Repair(std::move(start.flooding), start.checked ? &*start.checked : nullptr);
     meshing.Halve();
     const double faceBudget = param.maxInputFacesGrowth * double(meshing.Best().pass.triangles.size());
     meshing.KeepInputFaces(faceBudget);

@@ -96,9 +96,11 @@ inline std::vector<int> RepeatedFaces(const MeshingPass &pass, const std::vector
 }
 
 /// The defects of `pass`, with the face pairs that come closer than `clearance` without meeting
-/// (see FacesIntersect) apart; given the pass it was derived from and its defects, only the
-/// pairs with a face that is not a repeat of that pass are tested (see RepeatedFaces), and only
-/// the cells whose polygon changed are searched for crossings.
+/// (see FacesIntersect) apart; given an earlier pass and its defects (found with the same
+/// clearance), only the pairs with a face that is not a repeat of that pass are tested (see
+/// RepeatedFaces), and only the cells whose polygon or plane changed are searched for crossings.
+/// The earlier pass may be of another labelling of the same surface (an earlier trial): cells
+/// are matched by index, and one with another polygon is searched anew.
 inline PassDefects FindDefects(const MeshingPass &pass, double clearance, const MeshingPass *previous = nullptr,
                                const PassDefects *previousDefects = nullptr)
 {
@@ -137,8 +139,8 @@ inline PassDefects FindDefects(const MeshingPass &pass, double clearance, const 
     // A cell with the polygon (SamePolygon) and the plane it had in `previous` has the crossings
     // it had there (they come in cell order).
     auto unchanged = [&](int c) {
-        return previous->cellMethod[c] != CellMethod::InputFaces && pass.cellNormal[c] == previous->cellNormal[c] &&
-               SamePolygon(*previous, pass, c);
+        return c < int(previous->polygons.size()) && previous->cellMethod[c] != CellMethod::InputFaces &&
+               pass.cellNormal[c] == previous->cellNormal[c] && SamePolygon(*previous, pass, c);
     };
     size_t known = 0;  // previous crossings of the cells before c
     for (int c = 0; c < int(pass.polygons.size()); ++c) {
@@ -155,6 +157,15 @@ inline PassDefects FindDefects(const MeshingPass &pass, double clearance, const 
     }
     return defects;
 }
+
+/// A pass with its defects, found with `clearance` (see FindDefects): where a later pass may
+/// start its tests from.
+struct CheckedPass
+{
+    MeshingPass pass;
+    PassDefects defects;
+    double clearance = 0;
+};
 
 /// Whether `written`, indexed from the output mesh, is the output of `pass`: the same faces on
 /// corners at the same positions, every vertex used. Only the vertex numbering may differ
