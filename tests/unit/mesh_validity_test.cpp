@@ -321,3 +321,48 @@ TEST(MeshValidity, GridFindsTheSamePairsAsTestingEveryPairWithAClearance)
     EXPECT_TRUE(std::includes(within.begin(), within.end(), exact.begin(), exact.end()));
     EXPECT_EQ(detail::SelfIntersectingPairs(soup, degenerate, {}, clearance), within);
 }
+
+// Long slivers cross few of the cells their boxes hold, and the grid keeps each in those alone
+// (SurfaceGrid::CellsCrossedBy): no pair within the clearance may be missed, near the origin or
+// far from it, where plain coordinates lose the small differences the cells are tested by.
+TEST(MeshValidity, GridFindsTheSamePairsAsTestingEveryPairAmongSlivers)
+{
+    for (const Point3d &offset : {Point3d(0, 0, 0), Point3d(-3e5, 1e6, 2e5)})
+        for (const double clearance : {0.0, 0.002}) {
+            const IndexedMesh soup = vsa_test::RandomSlivers(500, 0.004, offset, 11);
+            const std::vector<char> degenerate = detail::DegenerateFaceMask(soup);
+            std::vector<std::pair<int, int>> within;
+            for (int f = 0; f < soup.FaceCount(); ++f)
+                for (int g = f + 1; g < soup.FaceCount(); ++g)
+                    if (!degenerate[f] && !degenerate[g] && detail::FacesIntersect(soup, f, g, clearance))
+                        within.emplace_back(f, g);
+            ASSERT_GT(within.size(), 50u) << "clearance " << clearance;
+            EXPECT_EQ(detail::SelfIntersectingPairs(soup, degenerate, {}, clearance), within)
+                << "offset " << offset[1] << ", clearance " << clearance;
+        }
+}
+
+// A face grown by the margin stands for the points within the margin of it, beyond its edges
+// too: a small face beside a long sliver, closer than the clearance but in cells of its own
+// (made small by a fine square below), is found with it.
+TEST(MeshValidity, GridFindsAFaceBesideASliverWithinTheClearance)
+{
+    vsa_test::TMesh square;
+    vsa_test::MakeFlatSquare(square, 150);
+    IndexedMesh im = BuildIndexedMesh(square);
+    for (Point3d &p : im.positions) p[2] = -0.5;
+    const int n = int(im.positions.size());
+    for (const Point3d &p : {Point3d(-0.9, 0, 0), Point3d(0.9, 0.01, 0), Point3d(0, -0.01, 0),  // the sliver
+                             Point3d(0, 0.04, 0), Point3d(0.01, 0.05, 0), Point3d(0, 0.05, 0)})   // beside it
+        im.positions.push_back(p);
+    im.faces.push_back({n, n + 1, n + 2});
+    im.faces.push_back({n + 3, n + 4, n + 5});
+    const int sliver = im.FaceCount() - 2, beside = im.FaceCount() - 1;
+    const std::vector<char> degenerate = detail::DegenerateFaceMask(im);
+    ASSERT_FALSE(detail::FacesIntersect(im, sliver, beside, 0.02));
+    ASSERT_TRUE(detail::FacesIntersect(im, sliver, beside, 0.04));
+    std::vector<std::pair<int, int>> pairs;  // the square's own faces are within the clearance of each other
+    for (const auto &pair : detail::SelfIntersectingPairs(im, degenerate, {}, 0.04))
+        if (pair.second >= sliver) pairs.push_back(pair);
+    EXPECT_EQ(pairs, (std::vector<std::pair<int, int>>{{sliver, beside}}));
+}

@@ -146,6 +146,24 @@ inline vcg::tri::vsa::IndexedMesh RandomTriangleSoup(int big, int small, unsigne
     return soup;
 }
 
+/// `count` long slivers across the unit cube moved by `offset`: two far corners, the third off
+/// their midpoint by up to `width` (the long thin triangles of a polygon's triangulation).
+inline vcg::tri::vsa::IndexedMesh RandomSlivers(int count, double width, const Point3d &offset, unsigned seed)
+{
+    std::mt19937 random(seed);
+    std::uniform_real_distribution<double> unit(0, 1);
+    auto point = [&] { return Point3d(unit(random), unit(random), unit(random)); };
+    vcg::tri::vsa::IndexedMesh soup;
+    for (int f = 0; f < count; ++f) {
+        const Point3d a = point(), b = point();
+        const Point3d c = (a + b) * 0.5 + (point() - Point3d(0.5, 0.5, 0.5)) * (2 * width);
+        const int n = int(soup.positions.size());
+        for (const Point3d &p : {a, b, c}) soup.positions.push_back(p + offset);
+        soup.faces.push_back({n, n + 1, n + 2});
+    }
+    return soup;
+}
+
 inline double SurfaceArea(const vcg::tri::vsa::IndexedMesh &mesh)
 {
     double area = 0;

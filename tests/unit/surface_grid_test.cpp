@@ -62,6 +62,13 @@ TEST(SurfaceGrid, MatchesBruteForceAmongBigSlantedFaces)
     ExpectMatchesBruteForce(vsa_test::RandomTriangleSoup(40, 400, 3), 3000);
 }
 
+TEST(SurfaceGrid, MatchesBruteForceAmongSlivers)
+{
+    // Long slivers are bucketed only in the cells they cross, which their boxes hold few of.
+    ExpectMatchesBruteForce(vsa_test::RandomSlivers(300, 0.004, Point3d(0, 0, 0), 5), 3000);
+    ExpectMatchesBruteForce(vsa_test::RandomSlivers(300, 0.004, Point3d(-3e5, 1e6, 2e5), 5), 3000);
+}
+
 TEST(SurfaceGrid, EmptyMeshHasNothingNear)
 {
     const IndexedMesh empty;

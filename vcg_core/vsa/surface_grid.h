@@ -233,37 +233,78 @@ private:
     }
     double SquaredDistanceOutside(const Point3d &p) const { return BoxSquaredDistance(box_, p); }
 
-    /// The cells of face f's box that its plane crosses: a big slanted face crosses far fewer
-    /// than its box holds. Once the grid is filled, `occupiedOnly` leaves out empty cells first,
-    /// with no plane to test.
+    /// The cells of face f's box that the face (grown by the margin) may touch: those its plane
+    /// crosses and, within its plane, that reach the triangle across each of its edges (the
+    /// separating axes of a box and a triangle that matter most): a big slanted face crosses far
+    /// fewer cells than its box holds, and a long sliver far fewer than its plane does. Once the
+    /// grid is filled, `occupiedOnly` leaves out empty cells first, with nothing to test.
     template <class Visit>
     void CellsCrossedBy(int f, Visit visit, bool occupiedOnly = false) const
     {
         const Box3d faceBox = FaceBox(f);
         if (box_.IsNull() || !BoxesTouch(faceBox, box_)) return;
         const Point3i lo = CellOf(faceBox.min), hi = CellOf(faceBox.max);
-        // A small box has few cells to spare: not worth the test.
-        const bool testPlane = (hi[0] - lo[0] + 1) * (hi[1] - lo[1] + 1) * (hi[2] - lo[2] + 1) > 8;
-        const Point3d &corner = positions_[faces_[f][0]];
-        Point3d n(0, 0, 0);
-        double reach = 0;
-        if (testPlane) {
-            const Point3d e1 = positions_[faces_[f][1]] - corner, e2 = positions_[faces_[f][2]] - corner;
-            n = e1 ^ e2;
-            // Half the cell's extent along n, with room for rounding (of n too, which is all
-            // rounding on a sliver): never miss a cell the face touches.
-            reach = (std::abs(n[0]) * cellSize_[0] + std::abs(n[1]) * cellSize_[1] + std::abs(n[2]) * cellSize_[2]) *
-                        (0.5 + 1e-6) +
-                    1e-10 * e1.Norm() * e2.Norm() * box_.Diag() + margin_ * n.Norm();
+        // A small box has few cells to spare: not worth the tests.
+        if ((hi[0] - lo[0] + 1) * (hi[1] - lo[1] + 1) * (hi[2] - lo[2] + 1) <= 8) {
+            ForEachCellIn(lo, hi, occupiedOnly, [&](size_t cell, const Point3d &) { visit(int(cell)); });
+            return;
         }
+        // Corners relative to the first, as the cells' centers below: far from the origin, plain
+        // coordinates would lose the small differences the tests look at.
+        const Point3d &origin = positions_[faces_[f][0]];
+        const std::array<Point3d, 3> p{Point3d(0, 0, 0), positions_[faces_[f][1]] - origin,
+                                       positions_[faces_[f][2]] - origin};
+        const Point3d n = p[1] ^ p[2];
+        // Room for rounding (of n too, which is all rounding on a sliver): never miss a cell the
+        // face touches.
+        const double rounding = 1e-10 * p[1].Norm() * p[2].Norm() * box_.Diag();
+        std::array<SeparatingAxis, 4> axes;
+        axes[0] = Axis(n, p[0], p[0], rounding);
+        for (int i = 0; i < 3; ++i) {
+            const Point3d edge = p[(i + 1) % 3] - p[i];
+            axes[i + 1] = Axis(n ^ edge, p[i], p[(i + 2) % 3], rounding * edge.Norm());
+        }
+        ForEachCellIn(lo, hi, occupiedOnly, [&](size_t cell, const Point3d &center) {
+            const Point3d offset = center - origin;
+            for (const SeparatingAxis &axis : axes)
+                if (!axis.Reaches(offset)) return;
+            visit(int(cell));
+        });
+    }
+
+    /// The projection of a face on an axis, [low, high], and how far a cell's projection
+    /// reaches from its center's (half the cell's extent, the margin, room for rounding).
+    struct SeparatingAxis
+    {
+        Point3d axis;
+        double low = 0, high = 0, reach = 0;
+        bool Reaches(const Point3d &center) const
+        {
+            const double c = axis * center;
+            return c + reach >= low && c - reach <= high;
+        }
+    };
+    /// The axis `axis`, on which the face spans the projections of `a` and `b`.
+    SeparatingAxis Axis(const Point3d &axis, const Point3d &a, const Point3d &b, double rounding) const
+    {
+        const double pa = axis * a, pb = axis * b;
+        const double half = (std::abs(axis[0]) * cellSize_[0] + std::abs(axis[1]) * cellSize_[1] +
+                             std::abs(axis[2]) * cellSize_[2]) * (0.5 + 1e-6);
+        return {axis, std::min(pa, pb), std::max(pa, pb), half + rounding + margin_ * axis.Norm()};
+    }
+
+    /// Calls visit(cell index, cell center) for the cells from `lo` to `hi`, or only those that
+    /// hold faces.
+    template <class Visit>
+    void ForEachCellIn(const Point3i &lo, const Point3i &hi, bool occupiedOnly, Visit visit) const
+    {
         for (int z = lo[2]; z <= hi[2]; ++z)
             for (int y = lo[1]; y <= hi[1]; ++y)
                 for (int x = lo[0]; x <= hi[0]; ++x) {
                     const size_t cell = CellIndex(x, y, z);
                     if (occupiedOnly && cellOffset_[cell] == cellOffset_[cell + 1]) continue;
-                    const Point3d center = box_.min + Point3d((x + 0.5) * cellSize_[0], (y + 0.5) * cellSize_[1],
-                                                              (z + 0.5) * cellSize_[2]);
-                    if (!testPlane || std::abs(n * (center - corner)) <= reach) visit(int(cell));
+                    visit(cell, box_.min + Point3d((x + 0.5) * cellSize_[0], (y + 0.5) * cellSize_[1],
+                                                   (z + 0.5) * cellSize_[2]));
                 }
     }
 
