@@ -80,7 +80,8 @@ public:
     void Repair(std::optional<CellFlooding> flooding, const CheckedPass *earlier)
     {
         best_ = MesherOf(*surface_, &progress_, std::move(flooding));
-        best_->Repair(earlier && earlier->clearance == clearance_ ? earlier : nullptr);
+        if (earlier && earlier->clearance == clearance_) best_->Repair(&earlier->pass, &earlier->defects);
+        else best_->Repair();
     }
 
     /// Where the output still intersects itself, the cells of the intersecting faces are halved
@@ -206,7 +207,7 @@ private:
         std::string internalError;
         if (!BuildCellsAndLoops(split, internalError)) return nullptr;
         std::unique_ptr<Mesher> mesher = MesherOf(split, nullptr, earlier.Flooding());
-        mesher->Repair();
+        mesher->Repair(&earlier.Best().pass, &earlier.Best().defects);
         return mesher;
     }
 

@@ -326,16 +326,15 @@ public:
     CellFlooding &Flooding() { return flooding_; }
 
     /// The first pass, then repair passes while defects remain (see RespondToDefects), until
-    /// repairRounds or the repair diverges (see kRepairPatience). `earlier`: a pass on a
-    /// labelling of this surface, checked with this clearance, whose tests the first pass's
-    /// defects take where it repeats it (the last trial's, see MeshingStart), or nullptr.
-    void Repair(const CheckedPass *earlier = nullptr)
+    /// repairRounds or the repair diverges (see kRepairPatience). `earlier`, `earlierDefects`:
+    /// a pass on this surface, another labelling of it or one it was split from, and its defects
+    /// found with this clearance, which the first pass's tests start from where it repeats it
+    /// (see FindDefects), or nullptr.
+    void Repair(const MeshingPass *earlier = nullptr, const PassDefects *earlierDefects = nullptr)
     {
         Step(kFirstPassFrom, kRepairFrom, kFirstPassItems, "VSA meshing: anchors and triangulation");
         best_.pass = RunPass(nullptr);
-        if (param_.repairRounds > 0)
-            best_.defects = FindDefects(best_.pass, clearance_, earlier ? &earlier->pass : nullptr,
-                                        earlier ? &earlier->defects : nullptr);
+        if (param_.repairRounds > 0) best_.defects = FindDefects(best_.pass, clearance_, earlier, earlierDefects);
         best_.requiredAnchors = requiredAnchors_;
         best_.pinnedAnchors = pinnedAnchors_;
         defects_ = best_.defects;

@@ -99,8 +99,9 @@ inline std::vector<int> RepeatedFaces(const MeshingPass &pass, const std::vector
 /// (see FacesIntersect) apart; given an earlier pass and its defects (found with the same
 /// clearance), only the pairs with a face that is not a repeat of that pass are tested (see
 /// RepeatedFaces), and only the cells whose polygon or plane changed are searched for crossings.
-/// The earlier pass may be of another labelling of the same surface (an earlier trial): cells
-/// are matched by index, and one with another polygon is searched anew.
+/// The earlier pass may be of another labelling of the same surface (an earlier trial) or of
+/// the surface this one was split from (halved or carved): cells are matched by index, and one
+/// with another polygon or plane is searched anew.
 inline PassDefects FindDefects(const MeshingPass &pass, double clearance, const MeshingPass *previous = nullptr,
                                const PassDefects *previousDefects = nullptr)
 {
