@@ -250,21 +250,13 @@ private:
             return;
         }
         // Corners relative to the first, as the cells' centers below: far from the origin, plain
-        // coordinates would lose the small differences the tests look at.
+        // coordinates would lose the small differences the tests look at. The axes are set up at
+        // the first cell that holds faces: a search among a few fresh faces finds none for most.
         const Point3d &origin = positions_[faces_[f][0]];
-        const std::array<Point3d, 3> p{Point3d(0, 0, 0), positions_[faces_[f][1]] - origin,
-                                       positions_[faces_[f][2]] - origin};
-        const Point3d n = p[1] ^ p[2];
-        // Room for rounding (of n too, which is all rounding on a sliver): never miss a cell the
-        // face touches.
-        const double rounding = 1e-10 * p[1].Norm() * p[2].Norm() * box_.Diag();
         std::array<SeparatingAxis, 4> axes;
-        axes[0] = Axis(n, p[0], p[0], rounding);
-        for (int i = 0; i < 3; ++i) {
-            const Point3d edge = p[(i + 1) % 3] - p[i];
-            axes[i + 1] = Axis(n ^ edge, p[i], p[(i + 2) % 3], rounding * edge.Norm());
-        }
+        bool ready = false;
         ForEachCellIn(lo, hi, occupiedOnly, [&](size_t cell, const Point3d &center) {
+            if (!ready) axes = SeparatingAxes(f, origin), ready = true;
             const Point3d offset = center - origin;
             for (const SeparatingAxis &axis : axes)
                 if (!axis.Reaches(offset)) return;
@@ -291,6 +283,25 @@ private:
         const double half = (std::abs(axis[0]) * cellSize_[0] + std::abs(axis[1]) * cellSize_[1] +
                              std::abs(axis[2]) * cellSize_[2]) * (0.5 + 1e-6);
         return {axis, std::min(pa, pb), std::max(pa, pb), half + rounding + margin_ * axis.Norm()};
+    }
+
+    /// Face f's plane and, in its plane, its edges' outward axes, relative to `origin` (its
+    /// first corner).
+    std::array<SeparatingAxis, 4> SeparatingAxes(int f, const Point3d &origin) const
+    {
+        const std::array<Point3d, 3> p{Point3d(0, 0, 0), positions_[faces_[f][1]] - origin,
+                                       positions_[faces_[f][2]] - origin};
+        const Point3d n = p[1] ^ p[2];
+        // Room for rounding (of n too, which is all rounding on a sliver): never miss a cell the
+        // face touches.
+        const double rounding = 1e-10 * p[1].Norm() * p[2].Norm() * box_.Diag();
+        std::array<SeparatingAxis, 4> axes;
+        axes[0] = Axis(n, p[0], p[0], rounding);
+        for (int i = 0; i < 3; ++i) {
+            const Point3d edge = p[(i + 1) % 3] - p[i];
+            axes[i + 1] = Axis(n ^ edge, p[i], p[(i + 2) % 3], rounding * edge.Norm());
+        }
+        return axes;
     }
 
     /// Calls visit(cell index, cell center) for the cells from `lo` to `hi`, or only those that
