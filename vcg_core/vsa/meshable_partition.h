@@ -151,21 +151,18 @@ struct TrialSetup
 
 /// Per region, the share of its triangles' area whose nearest input face (in `grid`, a face of
 /// `s`) points the other way (what shades dark where the input does not), from four
-/// samples per triangle. Triangles repeated from `previous` (the previous trial's pass, if any,
-/// with its faces' `wasDegenerate` and `wasAway` samples) are not sampled again. Returns the
+/// samples per triangle. Triangles that repeat one of the previous trial's (`repeats`, see
+/// RepeatedFaces; empty without a previous trial) take its samples from `wasAway`. Returns the
 /// samples of `pass`'s triangles.
 inline std::vector<uint8_t> MeasureFacingAway(const MeshingSurface &s, const MeshingPass &pass,
-                                              const std::vector<char> &degenerate, const SurfaceGrid &grid,
-                                              const MeshingPass *previous, const std::vector<char> &wasDegenerate,
+                                              const SurfaceGrid &grid, const std::vector<int> &repeats,
                                               const std::vector<uint8_t> &wasAway, RegionTrial &trial)
 {
     const int regionCount = int(trial.fault.size());
     std::vector<uint8_t> awayBits(pass.triangles.size());
     std::vector<int> fresh;  // the triangles to sample
-    const std::vector<int> repeats =
-        previous ? RepeatedFaces(pass, degenerate, *previous, wasDegenerate) : std::vector<int>();
     for (size_t t = 0; t < pass.triangles.size(); ++t)
-        if (previous && repeats[t] >= 0) awayBits[t] = wasAway[repeats[t]];
+        if (!repeats.empty() && repeats[t] >= 0) awayBits[t] = wasAway[repeats[t]];
         else fresh.push_back(int(t));
     const auto corner = [&](int t, int i) -> const Point3d & { return pass.positions[pass.triangles[t][i]]; };
     // One triangle at a time on every thread: a query is tens of microseconds on a large mesh.
@@ -356,7 +353,8 @@ RegionTrial TrialMeshRegions(TrialSetup<CoordType> &input, const Partition &part
     input.latest->Repair();
     const MeshingPass &pass = input.latest->Best().pass;
     const MeshingPass *previous = before ? &before->Best().pass : nullptr;
-    PassDefects defects = FindDefects(pass, input.clearance, previous, previous ? &input.defects : nullptr);
+    std::vector<int> repeats;  // of the previous trial's triangles, for the defects and the samples
+    PassDefects defects = FindDefects(pass, input.clearance, previous, previous ? &input.defects : nullptr, &repeats);
 
     auto flag = [&](int region, RegionFault fault) { trial.fault[region] = std::max(trial.fault[region], fault); };
     if (param.strayFactor > 0) {
@@ -368,8 +366,7 @@ RegionTrial TrialMeshRegions(TrialSetup<CoordType> &input, const Partition &part
     for (int r : s.cellRegion) ++cells[r];
     for (int r = 0; r < regionCount; ++r)
         if (cells[r] > 1) flag(r, RegionFault::NotDisc);
-    input.awayBits = MeasureFacingAway(s, pass, defects.degenerate, *input.grid, previous, input.defects.degenerate,
-                                       input.awayBits, trial);
+    input.awayBits = MeasureFacingAway(s, pass, *input.grid, repeats, input.awayBits, trial);
     for (int r = 0; r < regionCount; ++r)
         if (trial.facingAway[r] > kFacingAwayShare) flag(r, RegionFault::FacesAway);
     for (const PassDefects::Crossing &crossing : defects.crossings) flag(s.cellRegion[crossing.cell], RegionFault::Folds);

@@ -102,8 +102,9 @@ inline std::vector<int> RepeatedFaces(const MeshingPass &pass, const std::vector
 /// The earlier pass may be of another labelling of the same surface (an earlier trial) or of
 /// the surface this one was split from (halved or carved): cells are matched by index, and one
 /// with another polygon or plane is searched anew.
+/// `repeats`, if given, receives RepeatedFaces of `pass` in `previous` (empty without it).
 inline PassDefects FindDefects(const MeshingPass &pass, double clearance, const MeshingPass *previous = nullptr,
-                               const PassDefects *previousDefects = nullptr)
+                               const PassDefects *previousDefects = nullptr, std::vector<int> *repeats = nullptr)
 {
     PassDefects defects;
     IndexedMesh output;  // as far as self-intersections are concerned
@@ -113,16 +114,17 @@ inline PassDefects FindDefects(const MeshingPass &pass, double clearance, const 
     defects.degenerateFaces = size_t(std::count(defects.degenerate.begin(), defects.degenerate.end(), 1));
     std::vector<char> fresh;  // all, without `previous`
     std::vector<int> repeatOf;
+    std::vector<int> repeated;
     if (previous) {
-        const std::vector<int> repeats =
-            RepeatedFaces(pass, defects.degenerate, *previous, previousDefects->degenerate);
-        fresh.resize(repeats.size());
+        repeated = RepeatedFaces(pass, defects.degenerate, *previous, previousDefects->degenerate);
+        fresh.resize(repeated.size());
         repeatOf.assign(previous->triangles.size(), -1);
-        for (size_t f = 0; f < repeats.size(); ++f) {
-            fresh[f] = repeats[f] < 0;
-            if (repeats[f] >= 0) repeatOf[repeats[f]] = int(f);
+        for (size_t f = 0; f < repeated.size(); ++f) {
+            fresh[f] = repeated[f] < 0;
+            if (repeated[f] >= 0) repeatOf[repeated[f]] = int(f);
         }
     }
+    if (repeats) *repeats = std::move(repeated);
     // Pairs found now meet or are close; the exact test tells which.
     const std::vector<std::pair<int, int>> found = SelfIntersectingPairs(output, defects.degenerate, fresh, clearance);
     for (const auto &[f, g] : found)
