@@ -83,7 +83,7 @@ TEST(MultilevelSeeding, PatchGraphSumsItsFacesExactly)
     SeedRandom random(7);
     SeedRandomly(im, metric, g, patches, PatchesGoal(im.FaceCount() / 20), random, ws);
     const std::vector<int> patchOf = patches.partition.faceRegion;
-    const PatchGraph<L2Metric> graph = BuildPatchGraph(im, metric, patches.partition);
+    const PatchGraph<L2Metric> graph = BuildPatchGraph<L2Metric>(im, metric, patches.partition);
     ASSERT_EQ(graph.FaceCount(), im.FaceCount() / 20);
     EXPECT_EQ(graph.patchOf, patchOf);
 
@@ -108,6 +108,32 @@ TEST(MultilevelSeeding, PatchGraphSumsItsFacesExactly)
     for (int f = 0; f < im.FaceCount(); ++f) summed[patchOf[f]] += metric.Error(f, proxy);
     for (int p = 0; p < graph.FaceCount(); ++p)
         EXPECT_NEAR(patchMetric.Error(p, proxy), summed[p], 1e-9 * (summed[p] + g.maxArea)) << "patch " << p;
+
+    // Patches grouped again (as the early rounds' graph): a group's error is its faces' too,
+    // and groups are adjacent where their faces are.
+    PartitionWorkspace<PatchMetric<L2Metric>, NeighborSpan> patchWs;
+    const PatchGraph<L2Metric> groups = BuildPatchGraph<L2Metric>(
+        graph, patchMetric, detail::FloodPatches(graph, patchMetric, graph.geometry, graph.FaceCount() / 4, random, patchWs));
+    ASSERT_EQ(groups.FaceCount(), graph.FaceCount() / 4);
+    EXPECT_EQ(vsa_test::CheckPartition(im, [&] {
+        std::vector<int> groupOfFace(im.FaceCount());
+        for (int f = 0; f < im.FaceCount(); ++f) groupOfFace[f] = groups.patchOf[patchOf[f]];
+        return groupOfFace;
+    }(), groups.FaceCount()), "");
+    const PatchMetric<L2Metric> groupMetric(metric, groups, g.maxArea);
+    std::vector<double> groupSummed(groups.FaceCount(), 0);
+    std::set<std::pair<int, int>> groupsExpected, groupsListed;
+    for (int f = 0; f < im.FaceCount(); ++f) {
+        const int q = groups.patchOf[patchOf[f]];
+        groupSummed[q] += metric.Error(f, proxy);
+        for (int h : im.neighbors[f])
+            if (h >= 0 && groups.patchOf[patchOf[h]] != q) groupsExpected.emplace(q, groups.patchOf[patchOf[h]]);
+    }
+    for (int q = 0; q < groups.FaceCount(); ++q) {
+        EXPECT_NEAR(groupMetric.Error(q, proxy), groupSummed[q], 1e-9 * (groupSummed[q] + g.maxArea)) << "group " << q;
+        for (int r : groups.neighbors[q]) groupsListed.emplace(q, r);
+    }
+    EXPECT_EQ(groupsListed, groupsExpected);
 }
 
 TEST(MultilevelSeeding, CubeGetsOneRegionPerSide)

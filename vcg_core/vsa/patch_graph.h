@@ -57,9 +57,11 @@ struct PatchGraph
 
 /// The patch graph of `patches`, a partition of `mesh` into connected regions (as a flood
 /// leaves them); each patch's moments are taken about its proxy's point, and its proxy's
-/// plane is its fallback.
-template <class Metric>
-PatchGraph<Metric> BuildPatchGraph(const IndexedMesh &mesh, const Metric &metric, Partition patches)
+/// plane is its fallback. `mesh` is any face graph (see PartitionWorkspace) and `metric` a
+/// metric on its nodes whose moments are Metric's: the faces, or the patches of a finer graph
+/// (PatchMetric), so that patches can be grouped again.
+template <class Metric, class Graph, class NodeMetric>
+PatchGraph<Metric> BuildPatchGraph(const Graph &mesh, const NodeMetric &metric, Partition patches)
 {
     PatchGraph<Metric> graph;
     const int patchCount = int(patches.proxies.size());

@@ -411,11 +411,12 @@ inline int PatchFaces(int faceCount, const SeedingGoal &goal)
     return faces >= kMinPatchFaces ? int(faces) : 1;
 }
 
-/// `patchCount` connected patches: one random face per component and random others, each
-/// flooded from its own face's plane once, so that patches mostly keep to one side of a crease.
-template <class Metric>
-Partition FloodPatches(const IndexedMesh &mesh, const Metric &metric, const FaceGeometry &g, int patchCount,
-                       SeedRandom &random, PartitionWorkspace<Metric> &ws)
+/// `patchCount` connected patches of `mesh` (any face graph): one random node per component and
+/// random others, each flooded from its own node's plane once, so that patches mostly keep to
+/// one side of a crease.
+template <class Graph, class Metric, class Neighbors>
+Partition FloodPatches(const Graph &mesh, const Metric &metric, const FaceGeometry &g, int patchCount,
+                       SeedRandom &random, PartitionWorkspace<Metric, Neighbors> &ws)
 {
     RegionState s;
     PickOnePerComponent(mesh, metric, g, s, random);
@@ -424,44 +425,85 @@ Partition FloodPatches(const IndexedMesh &mesh, const Metric &metric, const Face
     return std::move(s.partition);
 }
 
+/// Gives the nodes of `fine` the regions of `coarse`, a partition of its groups (`groupOf`, per
+/// node of `fine`); then fits them and relaxes once on `fine`.
+template <class Graph, class Metric, class Neighbors>
+void CarryRegions(const RegionState &coarse, const std::vector<int> &groupOf, const Graph &fine, const Metric &metric,
+                  RegionState &s, PartitionWorkspace<Metric, Neighbors> &ws)
+{
+    s.partition.proxies = coarse.partition.proxies;
+    s.partition.faceRegion.resize(groupOf.size());
+    ProgressCounter carried;
+    for (size_t f = 0; f < groupOf.size(); ++f) {
+        s.partition.faceRegion[f] = coarse.partition.faceRegion[groupOf[f]];
+        carried.Count();
+    }
+    s.faceError.resize(groupOf.size());
+    s.seeds.assign(coarse.RegionCount(), -1);
+    s.regionEnergy.assign(coarse.RegionCount(), 0);
+    FitRegions(metric, s);
+    LloydIteration(fine, metric, s, ws);
+}
+
+/// The early rounds of seeding on patches (`graph`), on a coarser graph of groups of about
+/// kGroupedPatches patches each, up to `goal`: they place regions far larger than either
+/// graph's nodes, at a quarter of the cost. Leaves in `coarse` their regions carried to the
+/// patches and relaxed once there. Takes `progress` from `from` to `to`.
+template <class Metric>
+void SeedOnGroups(const Metric &metric, double faceMaxArea, const PatchGraph<Metric> &graph,
+                  const PatchMetric<Metric> &patchMetric, RegionState &coarse, const SeedingGoal &goal,
+                  SeedRandom &random, PartitionWorkspace<PatchMetric<Metric>, NeighborSpan> &patchWs,
+                  ProgressStage &progress, double from, double to)
+{
+    const double groupsEnd = from + (to - from) * 0.2, roundsEnd = from + (to - from) * 0.8;
+    progress.Step(from, groupsEnd, kPatchItems * graph.FaceCount());
+    const PatchGraph<Metric> groups = BuildPatchGraph<Metric>(
+        graph, patchMetric,
+        FloodPatches(graph, patchMetric, graph.geometry, graph.FaceCount() / kGroupedPatches, random, patchWs));
+    const PatchMetric<Metric> groupMetric(metric, groups, faceMaxArea);
+    PartitionWorkspace<PatchMetric<Metric>, NeighborSpan> groupWs;
+    RegionState grouped;
+    StartOnePerComponent(groups, groupMetric, groups.geometry, grouped, random);
+    DoublingRounds(groups, groupMetric, groups.geometry, grouped, goal, groupWs, progress, groupsEnd, roundsEnd);
+    progress.Step(roundsEnd, to, kCarryItems * graph.FaceCount());
+    CarryRegions(grouped, groups.patchOf, graph, patchMetric, coarse, patchWs);
+}
+
 /// Hierarchical seeding on patches of about `patchFaces` faces (FloodPatches), up to the
 /// goal's count or as many regions as the patches allow; then the regions are carried to the
 /// faces, refitted and relaxed once there. The rounds' floods and insertions thus touch
-/// patches, not faces. Takes `progress` from 0 to the position it returns, where rounds on the
-/// faces (if the patches fell short of the goal) start.
+/// patches, not faces; all but the last touch groups of patches (SeedOnGroups), as long as
+/// the groups are kPatchesPerRegion per region. Takes `progress` from 0 to the position it
+/// returns, where rounds on the faces (if the patches fell short of the goal) start.
 template <class Metric>
 double SeedOnPatches(const IndexedMesh &mesh, const Metric &metric, const FaceGeometry &g, RegionState &s,
                      const SeedingGoal &goal, int patchFaces, SeedRandom &random, PartitionWorkspace<Metric> &ws,
                      ProgressStage &progress)
 {
-    // Positions: the patches and their graph, the rounds on them, then the faces, about as
-    // their shares of the time at 832k faces, k = 200.
-    constexpr double kPatchesEnd = 40, kRoundsEnd = 70, kShortOfGoalEnd = 85;
+    // Positions: the patches and their graph, the rounds on groups, the rounds on patches, then
+    // the faces, about as their shares of the time at 3.3M faces, k = 200.
+    constexpr double kPatchesEnd = 44, kGroupsEnd = 56, kRoundsEnd = 70, kShortOfGoalEnd = 85;
     progress.Step(0, kPatchesEnd, kPatchItems * mesh.FaceCount());
     const PatchGraph<Metric> graph =
-        BuildPatchGraph(mesh, metric, FloodPatches(mesh, metric, g, mesh.FaceCount() / patchFaces, random, ws));
+        BuildPatchGraph<Metric>(mesh, metric, FloodPatches(mesh, metric, g, mesh.FaceCount() / patchFaces, random, ws));
     const PatchMetric<Metric> patchMetric(metric, graph, g.maxArea);
     PartitionWorkspace<PatchMetric<Metric>, NeighborSpan> patchWs;
     RegionState coarse;
     SeedingGoal coarseGoal = goal;
     coarseGoal.proxyCount = std::min(goal.proxyCount, graph.FaceCount() / kPatchesPerRegion);
-    StartOnePerComponent(graph, patchMetric, graph.geometry, coarse, random);
-    DoublingRounds(graph, patchMetric, graph.geometry, coarse, coarseGoal, patchWs, progress, kPatchesEnd, kRoundsEnd);
+    SeedingGoal groupGoal = coarseGoal;  // where the last round starts
+    groupGoal.proxyCount =
+        std::min((coarseGoal.proxyCount + 1) / 2, graph.FaceCount() / (kGroupedPatches * kPatchesPerRegion));
+    if (goal.targetEnergy <= 0 && groupGoal.proxyCount > graph.componentCount)
+        SeedOnGroups(metric, g.maxArea, graph, patchMetric, coarse, groupGoal, random, patchWs, progress, kPatchesEnd,
+                     kGroupsEnd);
+    else
+        StartOnePerComponent(graph, patchMetric, graph.geometry, coarse, random);
+    DoublingRounds(graph, patchMetric, graph.geometry, coarse, coarseGoal, patchWs, progress, kGroupsEnd, kRoundsEnd);
 
     const double end = coarseGoal.proxyCount < goal.proxyCount ? kShortOfGoalEnd : 100;
     progress.Step(kRoundsEnd, end, kCarryItems * mesh.FaceCount());
-    s.partition.proxies = coarse.partition.proxies;
-    s.partition.faceRegion.resize(mesh.FaceCount());
-    ProgressCounter carried;
-    for (int f = 0; f < mesh.FaceCount(); ++f) {
-        s.partition.faceRegion[f] = coarse.partition.faceRegion[graph.patchOf[f]];
-        carried.Count();
-    }
-    s.faceError.resize(mesh.FaceCount());
-    s.seeds.assign(coarse.RegionCount(), -1);
-    s.regionEnergy.assign(coarse.RegionCount(), 0);
-    FitRegions(metric, s);
-    LloydIteration(mesh, metric, s, ws);
+    CarryRegions(coarse, graph.patchOf, mesh, metric, s, ws);
     return end;
 }
 

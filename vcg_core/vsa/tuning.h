@@ -19,6 +19,7 @@ constexpr int kMultilevelFaces = 100000;  ///< seed on patches from this many fa
 constexpr int kMaxPatchFaces = 32;        ///< a coarse round then costs about 1/32 of one on the faces
 constexpr int kPatchesPerRegion = 16;     ///< enough patches that their borders and energies are close to the faces'
 constexpr int kMinPatchFaces = 4;         ///< smaller patches save too little to be worth a coarse level
+constexpr int kGroupedPatches = 4;        ///< patches per node of the early rounds' graph: rounds there cost a quarter
 // Work per face or node, in progress items (ProgressTick), so that the bar moves evenly:
 constexpr double kLloydItems = 5;   ///< a Lloyd iteration: marking, flooding, reading out, fitting, measuring
 constexpr double kPatchItems = 10;  ///< flooding the patches and building their graph
