@@ -482,7 +482,7 @@ double SeedOnPatches(const IndexedMesh &mesh, const Metric &metric, const FaceGe
 {
     // Positions: the patches and their graph, the rounds on groups, the rounds on patches, then
     // the faces, about as their shares of the time at 3.3M faces, k = 200.
-    constexpr double kPatchesEnd = 44, kGroupsEnd = 56, kRoundsEnd = 70, kShortOfGoalEnd = 85;
+    constexpr double kPatchesEnd = 53, kGroupsEnd = 66, kRoundsEnd = 77, kShortOfGoalEnd = 85;
     progress.Step(0, kPatchesEnd, kPatchItems * mesh.FaceCount());
     const PatchGraph<Metric> graph =
         BuildPatchGraph<Metric>(mesh, metric, FloodPatches(mesh, metric, g, mesh.FaceCount() / patchFaces, random, ws));
