@@ -174,8 +174,8 @@ private:
 };
 
 /// What one thread of a flood keeps: the candidates it queued, and the faces it labelled in the
-/// current wave.
-struct FloodLane
+/// current wave. A cache line of its own: the lanes of two threads must not share one.
+struct alignas(64) FloodLane
 {
     RankBuckets later;                 ///< candidates of ranks after the current one
     std::vector<FloodCandidate> next;  ///< candidates for the next wave of the current rank
@@ -227,16 +227,15 @@ struct PartitionWorkspace
     /// neighbours then costs a cache line per face instead of one per array.
     struct alignas(64) Node
     {
-        /// (n << 32) | region once labelled in the flood's n-th wave (n from 1, over every rank);
-        /// kFreeLabel while free. Faces labelled before the flood (walls) and seeds have n = 0.
-        /// One word, so that a face offered to several regions in one wave is decided by one
-        /// atomic minimum.
-        uint64_t label;
-        uint32_t queuedKey;  ///< the smallest key (FloodKey) queued for this face during a flood
+        /// The smallest (key << 32) | region (QueuedWord) offered this face during a flood: the
+        /// one candidate that will label it. One word, so that offers of the same wave from
+        /// several threads are decided by one atomic minimum, and claims need no atomics.
+        uint64_t queued;
+        int label;  ///< the face's region once labelled, kFreeLabel while free
         Neighbors neighbors;
         typename Metric::FaceData data;
 
-        int Region() const { return int(uint32_t(label)); }
+        int Region() const { return label; }
     };
     std::vector<Node> nodes;
     FloodRanks ranks;
@@ -252,10 +251,7 @@ struct PartitionWorkspace
 
 namespace detail {
 
-constexpr uint64_t kFreeLabel = ~uint64_t(0);
-
-/// A node's label for `region` in the flood's n-th wave (0: before the flood).
-inline uint64_t FloodLabel(uint32_t n, int region) { return uint64_t(n) << 32 | uint32_t(region); }
+constexpr int kFreeLabel = -1;
 
 /// Waves within a rank that keys tell apart; later waves share the last key, which only lets
 /// candidates that cannot label their face any more be queued.
@@ -268,6 +264,12 @@ inline uint32_t FloodKey(FloodRanks::Rank rank, uint32_t wave)
     const uint32_t lastWave = (uint32_t(1) << kFloodWaveBits) - 1;
     return rank << kFloodWaveBits | std::min(wave, lastWave);
 }
+
+/// A candidate's key and region in one word: the lower word is due first, or goes to the lower
+/// region among those offered a face in the same wave.
+inline uint64_t QueuedWord(uint32_t key, int region) { return uint64_t(key) << 32 | uint32_t(region); }
+
+constexpr uint64_t kNothingQueued = ~uint64_t(0);
 
 /// Lowers `word` to `value` when that is smaller and returns the value it had, atomically when
 /// `kShared` (other threads lower it at the same time). Written with the compilers' builtins
@@ -312,7 +314,7 @@ void PrepareNodes(const Graph &mesh, const Metric &metric, PartitionWorkspace<Me
     ResizeReporting(ws.nodes, size_t(mesh.FaceCount()));
     ForEachChunk(size_t(mesh.FaceCount()), [&](int, size_t begin, size_t end) {
         for (size_t f = begin; f < end; ++f) {
-            ws.nodes[f].label = FloodLabel(0, 0);
+            ws.nodes[f].label = 0;
             ws.nodes[f].neighbors = mesh.neighbors[f];
             ws.nodes[f].data = metric.Data(int(f));
         }
@@ -323,8 +325,8 @@ void PrepareNodes(const Graph &mesh, const Metric &metric, PartitionWorkspace<Me
 template <class Node>
 void MarkNode(Node &node, int region)
 {
-    node.label = region < 0 ? kFreeLabel : FloodLabel(0, region);
-    node.queuedKey = ~uint32_t(0);
+    node.label = region < 0 ? kFreeLabel : region;
+    node.queued = kNothingQueued;
 }
 
 /// One flood in progress: the rank whose candidates are due, and the wave within it.
@@ -352,7 +354,7 @@ public:
     /// Labels the seeds, (region, face) pairs, and floods from them.
     void Run(const std::vector<std::pair<int, int>> &seeds)
     {
-        for (const auto &seed : seeds) ws_.nodes[seed.second].label = FloodLabel(0, seed.first);
+        for (const auto &seed : seeds) ws_.nodes[seed.second].label = seed.first;
         // The seeds' offers come before wave 0 of rank 0: those of rank 0 make that wave.
         current_ = 0;
         wave_ = ~uint32_t(0);
@@ -387,7 +389,6 @@ private:
     /// the wave is large; the labels are the same either way.
     void RunWave()
     {
-        ++stamp_;
         const std::vector<FloodCandidate> &wave = ws_.wave;
         progress_.Count(int(wave.size()));  // on the calling thread, before the others start
         if (MaxThreads() == 1 || wave.size() < detail::ParallelMinWave()) {
@@ -405,7 +406,7 @@ private:
 
     void RunWaveAlone()
     {
-        Claim<false>(0, ws_.wave.size(), ws_.lanes[0]);
+        Claim(0, ws_.wave.size(), ws_.lanes[0]);
         OfferNeighbours<false>(ws_.lanes[0]);
     }
 
@@ -419,7 +420,7 @@ private:
             FloodLane &lane = ws_.lanes[size_t(ThreadIndex())];
 #pragma omp for schedule(dynamic, 1)
             for (int p = 0; p < pieces; ++p)
-                Claim<true>(size_t(p) * kWavePiece, std::min(size, size_t(p + 1) * kWavePiece), lane);
+                Claim(size_t(p) * kWavePiece, std::min(size, size_t(p + 1) * kWavePiece), lane);
             // Every claim of the wave is in (the loop's barrier): the labels are final.
             OfferNeighbours<true>(lane);
         }
@@ -428,13 +429,17 @@ private:
 #endif
     }
 
-    template <bool kShared>
+    /// Labels the faces of the wave's candidates that are still queued for them: one per face,
+    /// so no two threads write the same label.
     void Claim(size_t begin, size_t end, FloodLane &lane)
     {
+        const uint32_t key = FloodKey(current_, wave_);
         for (size_t i = begin; i < end; ++i) {
             const FloodCandidate c = ws_.wave[i];
-            if (LowerTo<kShared>(ws_.nodes[c.face].label, FloodLabel(stamp_, c.region)) == kFreeLabel)
-                lane.labelled.push_back(c.face);
+            auto &node = ws_.nodes[c.face];
+            if (node.queued != QueuedWord(key, c.region)) continue;
+            node.label = c.region;
+            lane.labelled.push_back(c.face);
         }
     }
 
@@ -459,8 +464,8 @@ private:
         if (node.label != kFreeLabel) return;  // no label changes while neighbours are offered
         const FloodRanks::Rank rank = ws_.ranks.RankOf(metric_.Error(node.data, proxies_[region]));
         const bool now = rank <= current_;
-        const uint32_t key = now ? FloodKey(current_, wave_ + 1) : FloodKey(rank, 0);
-        if (LowerTo<kShared>(node.queuedKey, key) < key) return;
+        const uint64_t word = QueuedWord(now ? FloodKey(current_, wave_ + 1) : FloodKey(rank, 0), region);
+        if (LowerTo<kShared>(node.queued, word) <= word) return;
         if (now) lane.next.push_back({face, region});
         else lane.later.Push(rank, {face, region});
     }
@@ -470,7 +475,6 @@ private:
     Workspace &ws_;
     FloodRanks::Rank current_ = 0;  ///< the rank whose waves run
     uint32_t wave_ = 0;             ///< the wave within it
-    uint32_t stamp_ = 0;            ///< waves run, over every rank: the labels' n
     ProgressCounter progress_;
 };
 
@@ -501,7 +505,7 @@ bool TakeLabel(Node &node, int &label)
         return true;
     }
     label = -1;
-    node.label = FloodLabel(0, 0);
+    node.label = 0;
     return false;
 }
 
