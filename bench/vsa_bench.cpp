@@ -194,7 +194,7 @@ int main(int argc, char **argv)
         progressGaps.Start("setup");
         ProgressStage setup(&NoteProgress, "VSA: setting up");  // as ApproximateShape reports it
         setup.Step(0, 100, vcg::tri::vsa::detail::kSetupItems * m.FN());
-        IndexedMesh snapshot = BuildIndexedMesh(m);
+        IndexedMesh snapshot = BuildIndexedMesh(m, nullptr, FaceOrder::kSpatialWhenLarge);  // as ApproximateShape
         if (IsTriangleSoup(snapshot)) {  // refused as ApproximateShape refuses it
             json.Add("error", std::string("refused: ") + kTriangleSoupRefusal).Print();
             return 1;

@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <string>
@@ -43,6 +44,33 @@ TEST(ApproximateShape, CubeBecomesItsSixSides)
     EXPECT_GT(progressCalls, 0);
     ASSERT_EQ(r.inputFaceRegion.size(), cube.face.size());
     for (size_t f = 0; f < cube.face.size(); ++f) EXPECT_GE(r.inputFaceRegion[f], 0);
+}
+
+/// Large meshes are approximated with their faces in space order; every input face must still
+/// get the region of its own side.
+TEST(ApproximateShape, FacesInSpaceOrderKeepTheirOwnRegions)
+{
+    TMesh cube, out;
+    vsa_test::MakeTessellatedCube(cube, 6);
+    vsa_test::ShuffleFaces(cube, 11);
+    const vsa_test::SpatialOrderFrom always(0);
+    const ShapeApproximationResult r = Approximate(cube, out, 6);
+    ASSERT_TRUE(r.ok) << r.error;
+    EXPECT_EQ(out.FN(), 12);
+    ASSERT_EQ(r.inputFaceRegion.size(), cube.face.size());
+    std::vector<int> sideRegion(6, -1);
+    for (size_t f = 0; f < cube.face.size(); ++f) {
+        const vcg::Point3f n = cube.face[f].cN();
+        int side = -1;
+        for (int axis = 0; axis < 3; ++axis)
+            if (std::abs(n[axis]) > 0.5f) side = 2 * axis + (n[axis] > 0);
+        ASSERT_GE(side, 0);
+        if (sideRegion[side] < 0) sideRegion[side] = r.inputFaceRegion[f];
+        ASSERT_EQ(r.inputFaceRegion[f], sideRegion[side]) << "face " << f;
+    }
+    std::sort(sideRegion.begin(), sideRegion.end());
+    EXPECT_EQ(std::unique(sideRegion.begin(), sideRegion.end()) - sideRegion.begin(), 6);
+    EXPECT_GE(sideRegion[0], 0);
 }
 
 /// A mesh the meshing cannot take is refused with the meshing's reason before any partitioning

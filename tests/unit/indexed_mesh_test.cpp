@@ -4,7 +4,11 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cstdlib>
 #include <limits>
+#include <numeric>
+#include <vector>
 
 using namespace vcg::tri::vsa;
 using vsa_test::TMesh;
@@ -86,4 +90,76 @@ TEST(IndexedMesh, SkipsDeletedAndUnreferencedAndFlagsNaN)
     EXPECT_EQ(im.VertexCount(), 3);
     EXPECT_EQ(diag.unreferencedVertices, 2);  // vertex 0 (only in the deleted face) and 4
     EXPECT_EQ(diag.nonFiniteVertices, 1);
+}
+
+namespace {
+
+/// Mean distance in the face arrays between two faces that share an edge: what the spatial
+/// order is there to shrink.
+double MeanNeighbourGap(const IndexedMesh &im)
+{
+    double sum = 0;
+    int pairs = 0;
+    for (int f = 0; f < im.FaceCount(); ++f)
+        for (int g : im.neighbors[f])
+            if (g > f) sum += g - f, ++pairs;
+    return sum / pairs;
+}
+
+}  // namespace
+
+TEST(IndexedMesh, SpatialOrderKeepsEveryFaceWithItsCornersAndBringsNeighboursClose)
+{
+    TMesh m;
+    vsa_test::MakeTessellatedCube(m, 16);
+    vsa_test::ShuffleFaces(m, 7);
+    MeshDiagnostics asRead, inSpace;
+    const IndexedMesh input = BuildIndexedMesh(m, &asRead);
+    const vsa_test::SpatialOrderFrom always(0);
+    const IndexedMesh im = BuildIndexedMesh(m, &inSpace, FaceOrder::kSpatialWhenLarge);
+
+    ASSERT_EQ(im.FaceCount(), input.FaceCount());
+    ASSERT_EQ(im.VertexCount(), input.VertexCount());
+    std::vector<int> faces = im.sourceFace, vertices = im.sourceVertex, all(size_t(im.FaceCount()));
+    std::sort(faces.begin(), faces.end());
+    std::iota(all.begin(), all.end(), 0);
+    EXPECT_EQ(faces, all);  // every face once
+    std::sort(vertices.begin(), vertices.end());
+    all.resize(size_t(im.VertexCount()));
+    std::iota(all.begin(), all.end(), 0);
+    EXPECT_EQ(vertices, all);
+    for (int v = 0; v < im.VertexCount(); ++v)
+        ASSERT_EQ(im.positions[v], vcg::Point3d::Construct(m.vert[im.sourceVertex[v]].cP()));
+    for (int f = 0; f < im.FaceCount(); ++f)
+        for (int k = 0; k < 3; ++k)  // the same corners in the same turn: orientation kept
+            ASSERT_EQ(im.sourceVertex[im.faces[f][k]], int(m.face[im.sourceFace[f]].cV(k) - &m.vert[0]));
+
+    // The same mesh as far as every check can tell.
+    EXPECT_EQ(inSpace.Summary(), asRead.Summary());
+    EXPECT_TRUE(inSpace.IsClosed() && inSpace.IsTwoManifold() && inSpace.IsOriented());
+
+    // Along the curve: codes never decrease, and faces that share an edge are close in memory.
+    const std::vector<uint32_t> code = detail::SpaceCodes(FiniteBox(im.positions), size_t(im.FaceCount()), [&](size_t f) {
+        const auto &t = im.faces[f];
+        return (im.positions[t[0]] + im.positions[t[1]] + im.positions[t[2]]) / 3.0;
+    });
+    EXPECT_TRUE(std::is_sorted(code.begin(), code.end()));
+    EXPECT_GT(MeanNeighbourGap(input), 500);  // shuffled: about a third of the 3,072 faces
+    EXPECT_LT(MeanNeighbourGap(im), 50);
+}
+
+TEST(IndexedMesh, SpatialOrderOnlyForLargeMeshesAndWhenAsked)
+{
+    TMesh m;
+    vsa_test::MakeTessellatedCube(m, 4);
+    vsa_test::ShuffleFaces(m, 3);
+    for (const IndexedMesh &im : {BuildIndexedMesh(m, nullptr, FaceOrder::kSpatialWhenLarge), BuildIndexedMesh(m)})
+        for (int f = 0; f < im.FaceCount(); ++f) ASSERT_EQ(im.sourceFace[f], f);
+    const vsa_test::SpatialOrderFrom always(0);
+    const IndexedMesh asRead = BuildIndexedMesh(m);
+    for (int f = 0; f < asRead.FaceCount(); ++f) ASSERT_EQ(asRead.sourceFace[f], f);
+    const IndexedMesh inSpace = BuildIndexedMesh(m, nullptr, FaceOrder::kSpatialWhenLarge);
+    int moved = 0;
+    for (int f = 0; f < inSpace.FaceCount(); ++f) moved += inSpace.sourceFace[f] != f;
+    EXPECT_GT(moved, inSpace.FaceCount() / 2);
 }

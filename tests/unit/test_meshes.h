@@ -6,6 +6,10 @@
 #include <vcg/complex/algorithms/create/platonic.h>
 #include <wrap/io_trimesh/import.h>
 
+#include <vsa/indexed_mesh.h>
+
+#include <random>
+
 #include <string>
 
 namespace vsa_test {
@@ -78,6 +82,29 @@ inline void MakeTessellatedCube(TMesh &m, int n)
     BuildFromLists(m, coords, tris);
     vcg::tri::UpdateNormal<TMesh>::PerFaceNormalized(m);
 }
+
+/// Rebuilds `m` with its faces in a random order (a fixed seed gives a fixed order), as a scan
+/// whose faces follow no path on the surface.
+inline void ShuffleFaces(TMesh &m, unsigned seed)
+{
+    std::vector<vcg::Point3f> coords;
+    for (const auto &v : m.vert) coords.push_back(v.cP());
+    std::vector<vcg::Point3i> tris;
+    for (const auto &f : m.face)
+        tris.emplace_back(int(f.cV(0) - &m.vert[0]), int(f.cV(1) - &m.vert[0]), int(f.cV(2) - &m.vert[0]));
+    std::mt19937 random(seed);
+    for (size_t i = tris.size(); i > 1; --i) std::swap(tris[i - 1], tris[random() % i]);  // Fisher-Yates
+    BuildFromLists(m, coords, tris);
+    vcg::tri::UpdateNormal<TMesh>::PerFaceNormalized(m);
+}
+
+/// While it lives, snapshots asking for the spatial order (FaceOrder) get it from `minFaces`
+/// faces on, so that small test meshes take that path.
+struct SpatialOrderFrom
+{
+    explicit SpatialOrderFrom(int minFaces) { vcg::tri::vsa::detail::SpatialOrderMinFaces() = minFaces; }
+    ~SpatialOrderFrom() { vcg::tri::vsa::detail::SpatialOrderMinFaces() = vcg::tri::vsa::detail::kSpatialOrderMinFaces; }
+};
 
 /// Path of one of CGAL's sample meshes (unpacked by scripts/setup.sh).
 inline std::string CgalMesh(const std::string &name) { return std::string(VSA_CGAL_MESHES) + "/" + name; }

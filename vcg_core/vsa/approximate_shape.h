@@ -37,7 +37,9 @@ struct ShapeApproximationResult
     bool ok = false;
     std::string error;                ///< why nothing was produced, when !ok
     MeshDiagnostics input;            ///< what the input looked like
-    ApproximationResult partition;    ///< regions, proxies, energies, iterations (after MakePartitionMeshable)
+    /// Regions, proxies, energies, iterations (after MakePartitionMeshable), per face of the
+    /// snapshot, which orders large meshes in space (FaceOrder); inputFaceRegion is per input face.
+    ApproximationResult partition;
     MeshablePartitionReport meshable; ///< k' and why the regions were split
     MeshingReport meshing;            ///< anchors, fallbacks, validity of the output
     std::vector<int> inputFaceRegion; ///< per face of the input's container; -1 for deleted faces
@@ -222,7 +224,7 @@ ShapeApproximationResult ApproximateShape(const InMeshType &in, OutMeshType &out
         auto start = std::chrono::steady_clock::now();
         ProgressStage setup(detail::ProgressSlice::Enter(cb, 0, 3), "VSA: setting up");
         setup.Step(0, 100, detail::kSetupItems * in.FN());
-        IndexedMesh snapshot = BuildIndexedMesh(in, &result.input);
+        IndexedMesh snapshot = BuildIndexedMesh(in, &result.input, FaceOrder::kSpatialWhenLarge);
         if (result.input.nonFiniteVertices > 0) {
             result.error = "The mesh has " + std::to_string(result.input.nonFiniteVertices) +
                            " vertices with NaN or infinite coordinates; remove them first "

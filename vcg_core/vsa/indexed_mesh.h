@@ -5,6 +5,7 @@
 
 #include <vsa/parallel.h>
 #include <vsa/progress.h>
+#include <vsa/tuning.h>
 
 #include <vcg/complex/complex.h>
 
@@ -15,6 +16,7 @@
 #include <numeric>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace vcg {
@@ -23,7 +25,8 @@ namespace vsa {
 
 /// A triangle mesh as flat arrays. Every stage of the pipeline indexes these by face and
 /// vertex number, so the hot loops never chase vcg pointers or per-face attributes.
-/// Only live faces and the live vertices they reference are kept, in container order.
+/// Only live faces and the live vertices they reference are kept, in container order or in
+/// space (FaceOrder).
 struct IndexedMesh
 {
     std::vector<Point3d> positions;
@@ -279,6 +282,77 @@ inline std::vector<char> DegenerateFaceMask(const IndexedMesh &im)
     return degenerate;
 }
 
+/// kSpatialOrderMinFaces, or what tests set to order small meshes in space.
+inline int &SpatialOrderMinFaces()
+{
+    static int minFaces = kSpatialOrderMinFaces;
+    return minFaces;
+}
+
+/// Bits per axis of a cell in OrderFacesInSpace: cells a thousandth of the box wide hold a few
+/// faces each at 13M faces.
+constexpr int kSpaceCodeBits = 10;
+
+/// Interleaves the low kSpaceCodeBits bits of x with two zero bits after each.
+inline uint32_t SpreadBits(uint32_t x)
+{
+    x &= 0x3ff;
+    x = (x | (x << 16)) & 0x030000ff;
+    x = (x | (x << 8)) & 0x0300f00f;
+    x = (x | (x << 4)) & 0x030c30c3;
+    x = (x | (x << 2)) & 0x09249249;
+    return x;
+}
+
+/// Per item, the Morton code of the cell of `box` that holds `pointOf(item)`; a non-finite
+/// point gets a code above every cell's, so that it comes last.
+template <class PointOf>
+std::vector<uint32_t> SpaceCodes(const Box3d &box, size_t count, PointOf pointOf)
+{
+    const double cells = double(1 << kSpaceCodeBits);
+    Point3d scale;
+    for (int a = 0; a < 3; ++a) scale[a] = box.Dim()[a] > 0 ? cells / box.Dim()[a] : 0;
+    std::vector<uint32_t> code(count);
+    ForEachChunk(count, [&](int, size_t begin, size_t end) {
+        for (size_t i = begin; i < end; ++i) {
+            const Point3d p = pointOf(i);
+            if (!IsFinite(p)) {
+                code[i] = uint32_t(1) << (3 * kSpaceCodeBits);
+                continue;
+            }
+            uint32_t morton = 0;
+            for (int a = 0; a < 3; ++a) {
+                const double x = std::min(std::max((p[a] - box.min[a]) * scale[a], 0.0), cells - 1);
+                morton |= SpreadBits(uint32_t(x)) << a;
+            }
+            code[i] = morton;
+        }
+    });
+    return code;
+}
+
+/// The items in increasing order of `code`, ties in item order: a stable radix sort of
+/// (code, item) words, read in sequence.
+inline std::vector<int> OrderByCode(const std::vector<uint32_t> &code)
+{
+    constexpr int kDigitBits = 11;  // three digits cover the codes' 31 bits
+    std::vector<uint64_t> items(code.size()), sorted(code.size());
+    for (size_t i = 0; i < code.size(); ++i) items[i] = uint64_t(code[i]) << 32 | i;
+    std::vector<size_t> start(size_t(1) << kDigitBits);
+    for (int shift = 32; shift < 32 + 3 * kSpaceCodeBits + 1; shift += kDigitBits) {
+        auto digit = [shift](uint64_t item) { return size_t(item >> shift) & ((size_t(1) << kDigitBits) - 1); };
+        std::fill(start.begin(), start.end(), 0);
+        for (uint64_t item : items) ++start[digit(item)];
+        size_t sum = 0;
+        for (size_t &s : start) sum += std::exchange(s, sum);
+        for (uint64_t item : items) sorted[start[digit(item)]++] = item;
+        items.swap(sorted);
+    }
+    std::vector<int> order(code.size());
+    for (size_t i = 0; i < items.size(); ++i) order[i] = int(uint32_t(items[i]));
+    return order;
+}
+
 /// Links the faces of `im` (neighbours, components) and fills in what `diag` learns from that
 /// and from the faces' areas.
 inline void LinkAndDiagnose(IndexedMesh &im, MeshDiagnostics &diag)
@@ -295,10 +369,54 @@ inline void LinkAndDiagnose(IndexedMesh &im, MeshDiagnostics &diag)
 
 }  // namespace detail
 
+/// Reorders the faces of `im`, not linked yet, along a Morton curve through their centroids, and
+/// its vertices along the same curve, orientation kept. Faces near each other on the surface
+/// then lie near each other in memory, which the passes over a region, a cell or a flood front
+/// read (docs/tuning.md, "Faces in space-filling-curve order"). `sourceFace` and `sourceVertex`
+/// still lead back to the input.
+inline void OrderFacesInSpace(IndexedMesh &im)
+{
+    const Box3d box = FiniteBox(im.positions);
+    const std::vector<int> faceOrder = detail::OrderByCode(detail::SpaceCodes(box, im.faces.size(), [&](size_t f) {
+        const auto &t = im.faces[f];
+        return (im.positions[t[0]] + im.positions[t[1]] + im.positions[t[2]]) / 3.0;
+    }));
+    const std::vector<int> vertexOrder = detail::OrderByCode(
+        detail::SpaceCodes(box, im.positions.size(), [&](size_t v) { return im.positions[v]; }));
+    IndexedMesh ordered;
+    std::vector<int> newIndex(im.positions.size());
+    ordered.positions.resize(im.positions.size());
+    ordered.sourceVertex.resize(im.positions.size());
+    ForEachChunk(vertexOrder.size(), [&](int, size_t begin, size_t end) {
+        for (size_t i = begin; i < end; ++i) {
+            const size_t v = size_t(vertexOrder[i]);
+            newIndex[v] = int(i);
+            ordered.positions[i] = im.positions[v];
+            ordered.sourceVertex[i] = im.sourceVertex[v];
+        }
+    });
+    ordered.faces.resize(im.faces.size());
+    ordered.sourceFace.resize(im.faces.size());
+    ForEachChunk(faceOrder.size(), [&](int, size_t begin, size_t end) {
+        for (size_t i = begin; i < end; ++i) {
+            const size_t f = size_t(faceOrder[i]);
+            for (int k = 0; k < 3; ++k) ordered.faces[i][k] = newIndex[size_t(im.faces[f][k])];
+            ordered.sourceFace[i] = im.sourceFace[f];
+        }
+    });
+    im = std::move(ordered);
+}
+
+/// The order of an IndexedMesh's faces: the input container's, or along a space-filling curve
+/// (OrderFacesInSpace) once the mesh is large enough for that to pay.
+enum class FaceOrder { kInput, kSpatialWhenLarge };
+
 /// Builds the flat snapshot of `m` and reports what is unusual about it. Deleted faces and
-/// vertices, and vertices no face uses, are left out; nothing in `m` is changed.
+/// vertices, and vertices no face uses, are left out; nothing in `m` is changed. Faces and
+/// vertices follow `m`'s order unless `order` asks for the spatial one.
 template <class MeshType>
-IndexedMesh BuildIndexedMesh(const MeshType &m, MeshDiagnostics *diagnostics = nullptr)
+IndexedMesh BuildIndexedMesh(const MeshType &m, MeshDiagnostics *diagnostics = nullptr,
+                             FaceOrder order = FaceOrder::kInput)
 {
     IndexedMesh im;
     MeshDiagnostics diag;
@@ -330,6 +448,8 @@ IndexedMesh BuildIndexedMesh(const MeshType &m, MeshDiagnostics *diagnostics = n
 
     diag.nonFiniteVertices = int(std::count_if(im.positions.begin(), im.positions.end(),
                                                [](const Point3d &p) { return !IsFinite(p); }));
+    if (order == FaceOrder::kSpatialWhenLarge && im.FaceCount() >= detail::SpatialOrderMinFaces())
+        OrderFacesInSpace(im);
     detail::LinkAndDiagnose(im, diag);
     if (diagnostics) *diagnostics = diag;
     return im;
