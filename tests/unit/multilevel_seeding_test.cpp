@@ -73,6 +73,34 @@ bool FindsCubeSides(const IndexedMesh &im, const FaceGeometry &g, uint64_t seed,
 
 }  // namespace
 
+/// A graph of face sets (patches, or groups of patches) whose node of face f is nodeOf[f]: nodes
+/// are adjacent exactly where their faces share an edge, each pair listed once per side, and a
+/// node's error to any proxy is its faces' summed error.
+template <class NodeMetric>
+void ExpectGraphSumsItsFaces(const IndexedMesh &im, const L2Metric &metric, double maxArea,
+                             const PatchGraph<L2Metric> &graph, const NodeMetric &nodeMetric,
+                             const std::vector<int> &nodeOf, const char *what)
+{
+    std::set<std::pair<int, int>> expected, listed;
+    for (int f = 0; f < im.FaceCount(); ++f)
+        for (int h : im.neighbors[f])
+            if (h >= 0 && nodeOf[h] != nodeOf[f]) expected.emplace(nodeOf[f], nodeOf[h]);
+    size_t entries = 0;
+    for (int p = 0; p < graph.FaceCount(); ++p)
+        for (int q : graph.neighbors[p]) {
+            listed.emplace(p, q);
+            ++entries;
+        }
+    EXPECT_EQ(listed, expected) << what;
+    EXPECT_EQ(entries, expected.size()) << what;
+
+    const Proxy proxy{Point3d(0.1, 0.2, 0.3), Point3d(0, 0.6, 0.8)};
+    std::vector<double> summed(graph.FaceCount(), 0);
+    for (int f = 0; f < im.FaceCount(); ++f) summed[nodeOf[f]] += metric.Error(f, proxy);
+    for (int p = 0; p < graph.FaceCount(); ++p)
+        EXPECT_NEAR(nodeMetric.Error(p, proxy), summed[p], 1e-9 * (summed[p] + maxArea)) << what << " " << p;
+}
+
 TEST(MultilevelSeeding, PatchGraphSumsItsFacesExactly)
 {
     const IndexedMesh im = vsa_test::LoadCgalMesh("fandisk.off");
@@ -86,54 +114,19 @@ TEST(MultilevelSeeding, PatchGraphSumsItsFacesExactly)
     const PatchGraph<L2Metric> graph = BuildPatchGraph<L2Metric>(im, metric, patches.partition);
     ASSERT_EQ(graph.FaceCount(), im.FaceCount() / 20);
     EXPECT_EQ(graph.patchOf, patchOf);
-
-    // Adjacent patches are exactly the pairs that share an edge, each listed once per side.
-    std::set<std::pair<int, int>> expected, listed;
-    for (int f = 0; f < im.FaceCount(); ++f)
-        for (int h : im.neighbors[f])
-            if (h >= 0 && patchOf[h] != patchOf[f]) expected.emplace(patchOf[f], patchOf[h]);
-    size_t entries = 0;
-    for (int p = 0; p < graph.FaceCount(); ++p)
-        for (int q : graph.neighbors[p]) {
-            listed.emplace(p, q);
-            ++entries;
-        }
-    EXPECT_EQ(listed, expected);
-    EXPECT_EQ(entries, expected.size());
-
-    // A patch's error to any proxy is its faces' summed error.
     const PatchMetric<L2Metric> patchMetric(metric, graph, g.maxArea);
-    const Proxy proxy{Point3d(0.1, 0.2, 0.3), Point3d(0, 0.6, 0.8)};
-    std::vector<double> summed(graph.FaceCount(), 0);
-    for (int f = 0; f < im.FaceCount(); ++f) summed[patchOf[f]] += metric.Error(f, proxy);
-    for (int p = 0; p < graph.FaceCount(); ++p)
-        EXPECT_NEAR(patchMetric.Error(p, proxy), summed[p], 1e-9 * (summed[p] + g.maxArea)) << "patch " << p;
+    ExpectGraphSumsItsFaces(im, metric, g.maxArea, graph, patchMetric, patchOf, "patch");
 
-    // Patches grouped again (as the early rounds' graph): a group's error is its faces' too,
-    // and groups are adjacent where their faces are.
+    // Patches grouped again, as the early rounds' graph.
     PartitionWorkspace<PatchMetric<L2Metric>, NeighborSpan> patchWs;
     const PatchGraph<L2Metric> groups = BuildPatchGraph<L2Metric>(
         graph, patchMetric, detail::FloodPatches(graph, patchMetric, graph.geometry, graph.FaceCount() / 4, random, patchWs));
     ASSERT_EQ(groups.FaceCount(), graph.FaceCount() / 4);
-    EXPECT_EQ(vsa_test::CheckPartition(im, [&] {
-        std::vector<int> groupOfFace(im.FaceCount());
-        for (int f = 0; f < im.FaceCount(); ++f) groupOfFace[f] = groups.patchOf[patchOf[f]];
-        return groupOfFace;
-    }(), groups.FaceCount()), "");
-    const PatchMetric<L2Metric> groupMetric(metric, groups, g.maxArea);
-    std::vector<double> groupSummed(groups.FaceCount(), 0);
-    std::set<std::pair<int, int>> groupsExpected, groupsListed;
-    for (int f = 0; f < im.FaceCount(); ++f) {
-        const int q = groups.patchOf[patchOf[f]];
-        groupSummed[q] += metric.Error(f, proxy);
-        for (int h : im.neighbors[f])
-            if (h >= 0 && groups.patchOf[patchOf[h]] != q) groupsExpected.emplace(q, groups.patchOf[patchOf[h]]);
-    }
-    for (int q = 0; q < groups.FaceCount(); ++q) {
-        EXPECT_NEAR(groupMetric.Error(q, proxy), groupSummed[q], 1e-9 * (groupSummed[q] + g.maxArea)) << "group " << q;
-        for (int r : groups.neighbors[q]) groupsListed.emplace(q, r);
-    }
-    EXPECT_EQ(groupsListed, groupsExpected);
+    std::vector<int> groupOf(im.FaceCount());
+    for (int f = 0; f < im.FaceCount(); ++f) groupOf[f] = groups.patchOf[patchOf[f]];
+    EXPECT_EQ(vsa_test::CheckPartition(im, groupOf, groups.FaceCount()), "");
+    ExpectGraphSumsItsFaces(im, metric, g.maxArea, groups, PatchMetric<L2Metric>(metric, groups, g.maxArea), groupOf,
+                            "group");
 }
 
 TEST(MultilevelSeeding, CubeGetsOneRegionPerSide)

@@ -9,7 +9,6 @@
 #include <vsa/indexed_mesh.h>
 
 #include <random>
-
 #include <string>
 
 namespace vsa_test {

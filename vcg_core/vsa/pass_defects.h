@@ -113,18 +113,18 @@ inline PassDefects FindDefects(const MeshingPass &pass, double clearance, const 
     defects.degenerate = DegenerateFaceMask(output);
     defects.degenerateFaces = size_t(std::count(defects.degenerate.begin(), defects.degenerate.end(), 1));
     std::vector<char> fresh;  // all, without `previous`
-    std::vector<int> repeatOf;
-    std::vector<int> repeated;
+    std::vector<int> repeatOf;      // per face of `previous`: the face of `pass` that repeats it
+    std::vector<int> previousFace;  // per face of `pass`: the face of `previous` it repeats
     if (previous) {
-        repeated = RepeatedFaces(pass, defects.degenerate, *previous, previousDefects->degenerate);
-        fresh.resize(repeated.size());
+        previousFace = RepeatedFaces(pass, defects.degenerate, *previous, previousDefects->degenerate);
+        fresh.resize(previousFace.size());
         repeatOf.assign(previous->triangles.size(), -1);
-        for (size_t f = 0; f < repeated.size(); ++f) {
-            fresh[f] = repeated[f] < 0;
-            if (repeated[f] >= 0) repeatOf[repeated[f]] = int(f);
+        for (size_t f = 0; f < previousFace.size(); ++f) {
+            fresh[f] = previousFace[f] < 0;
+            if (previousFace[f] >= 0) repeatOf[previousFace[f]] = int(f);
         }
     }
-    if (repeats) *repeats = std::move(repeated);
+    if (repeats) *repeats = std::move(previousFace);
     // Pairs found now meet or are close; the exact test tells which.
     const std::vector<std::pair<int, int>> found = SelfIntersectingPairs(output, defects.degenerate, fresh, clearance);
     for (const auto &[f, g] : found)
