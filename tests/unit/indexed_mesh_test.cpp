@@ -138,10 +138,7 @@ TEST(IndexedMesh, SpatialOrderKeepsEveryFaceWithItsCornersAndBringsNeighboursClo
     EXPECT_TRUE(inSpace.IsClosed() && inSpace.IsTwoManifold() && inSpace.IsOriented());
 
     // Along the curve: codes never decrease, and faces that share an edge are close in memory.
-    const std::vector<uint32_t> code = detail::SpaceCodes(FiniteBox(im.positions), size_t(im.FaceCount()), [&](size_t f) {
-        const auto &t = im.faces[f];
-        return (im.positions[t[0]] + im.positions[t[1]] + im.positions[t[2]]) / 3.0;
-    });
+    const std::vector<uint32_t> code = detail::FaceSpaceCodes(im, FiniteBox(im.positions));
     EXPECT_TRUE(std::is_sorted(code.begin(), code.end()));
     EXPECT_GT(MeanNeighbourGap(input), 500);  // shuffled: about a third of the 3,072 faces
     EXPECT_LT(MeanNeighbourGap(im), 50);

@@ -331,6 +331,15 @@ std::vector<uint32_t> SpaceCodes(const Box3d &box, size_t count, PointOf pointOf
     return code;
 }
 
+/// Per face of `im`, the Morton code of the cell of `box` that holds its centroid.
+inline std::vector<uint32_t> FaceSpaceCodes(const IndexedMesh &im, const Box3d &box)
+{
+    return SpaceCodes(box, im.faces.size(), [&](size_t f) {
+        const auto &t = im.faces[f];
+        return (im.positions[t[0]] + im.positions[t[1]] + im.positions[t[2]]) / 3.0;
+    });
+}
+
 /// The items in increasing order of `code`, ties in item order: a stable radix sort of
 /// (code, item) words, read in sequence.
 inline std::vector<int> OrderByCode(const std::vector<uint32_t> &code)
@@ -377,10 +386,7 @@ inline void LinkAndDiagnose(IndexedMesh &im, MeshDiagnostics &diag)
 inline void OrderFacesInSpace(IndexedMesh &im)
 {
     const Box3d box = FiniteBox(im.positions);
-    const std::vector<int> faceOrder = detail::OrderByCode(detail::SpaceCodes(box, im.faces.size(), [&](size_t f) {
-        const auto &t = im.faces[f];
-        return (im.positions[t[0]] + im.positions[t[1]] + im.positions[t[2]]) / 3.0;
-    }));
+    const std::vector<int> faceOrder = detail::OrderByCode(detail::FaceSpaceCodes(im, box));
     const std::vector<int> vertexOrder = detail::OrderByCode(
         detail::SpaceCodes(box, im.positions.size(), [&](size_t v) { return im.positions[v]; }));
     IndexedMesh ordered;
