@@ -166,23 +166,48 @@ TEST(PartitionFlood, ClearForgetsCandidatesLeftBehind)
     EXPECT_TRUE(buckets.Empty());
 }
 
+/// FloodRegions' labels from the seeds and proxies of `s`, on `threads` threads; every face reached.
+template <class Metric>
+std::vector<int> FloodOnThreads(const IndexedMesh &im, const Metric &metric, const RegionState &s, int threads)
+{
+    std::vector<int> label(im.FaceCount(), -1);
+    PartitionWorkspace<Metric> ws;
+    const int unreached = vsa_test::WithThreads(
+        threads, [&] { return FloodRegions(im, metric, s.partition.proxies, s.seeds, label, ws); });
+    EXPECT_EQ(unreached, 0) << threads << " threads";
+    return label;
+}
+
 TEST(PartitionFlood, LabelsAreTheTextbookFloodsOnARealMesh)
 {
-    // On one thread, and with every wave shared by 2 and 3 threads.
+    // In one block (fandisk is smaller than one at kFloodBlockBits), and in 13 blocks of 1024
+    // faces whose offers across borders are made before the next wave; on 1, 2 and 3 threads.
     const IndexedMesh im = vsa_test::LoadCgalMesh("fandisk.off");
+    for (int blockBits : {detail::kFloodBlockBits, 10}) {
+        const vsa_test::FloodInBlocks blocks(blockBits, blockBits == 10 ? 1 : detail::kFloodExchangeWaves);
+        ForBothMetrics(im, [&](const auto &metric, const FaceGeometry &g, bool) {
+            const RegionState s = SeededState(im, metric, g, 60, 11);
+            const std::vector<int> textbook = TextbookFlood(im, metric, s.partition.proxies, s.seeds);
+            EXPECT_EQ(vsa_test::CheckPartition(im, textbook, 60), "");
+            for (int threads : {1, 2, 3})
+                EXPECT_EQ(FloodOnThreads(im, metric, s, threads), textbook) << threads << " threads, " << blockBits;
+        });
+    }
+}
+
+TEST(PartitionFlood, BlocksFloodTheSameOnAnyNumberOfThreads)
+{
+    // With offers across blocks kept for kFloodExchangeWaves waves, the labels differ from the
+    // textbook flood near the blocks' borders, but not with the threads, and the regions are
+    // still connected and cover the mesh.
+    const IndexedMesh im = vsa_test::LoadCgalMesh("fandisk.off");
+    const vsa_test::FloodInBlocks blocks(10, detail::kFloodExchangeWaves);
     ForBothMetrics(im, [&](const auto &metric, const FaceGeometry &g, bool) {
         const RegionState s = SeededState(im, metric, g, 60, 11);
-        const std::vector<int> textbook = TextbookFlood(im, metric, s.partition.proxies, s.seeds);
-        EXPECT_EQ(vsa_test::CheckPartition(im, textbook, 60), "");
-        for (int threads : {1, 2, 3}) {
-            std::vector<int> label(im.FaceCount(), -1);
-            PartitionWorkspace<std::decay_t<decltype(metric)>> ws;
-            const int unreached = vsa_test::WithThreads(threads, [&] {
-                return FloodRegions(im, metric, s.partition.proxies, s.seeds, label, ws);
-            });
-            EXPECT_EQ(unreached, 0) << threads << " threads";
-            EXPECT_EQ(label, textbook) << threads << " threads";
-        }
+        const std::vector<int> reference = FloodOnThreads(im, metric, s, 1);
+        EXPECT_EQ(vsa_test::CheckPartition(im, reference, 60), "");
+        for (int threads : {2, 3}) EXPECT_EQ(FloodOnThreads(im, metric, s, threads), reference) << threads << " threads";
+        EXPECT_NE(reference, TextbookFlood(im, metric, s.partition.proxies, s.seeds));
     });
 }
 

@@ -22,12 +22,13 @@
 
 namespace vsa_test {
 
-/// Flood waves that WithThreads sends to the threads: enough of them on the test meshes to
-/// check the threads' labels, few enough to keep 8 threads on 2 cores quick.
+/// Flood candidates for which WithThreads sends a flood's blocks to the threads: enough
+/// exchanges on the test meshes to check the threads' labels, few enough to keep 8 threads on
+/// 2 cores quick.
 constexpr size_t kTestMinWave = 64;
 
-/// Runs `f` with at most `threads` threads, every pass of two chunks or more and every flood
-/// wave of kTestMinWave candidates or more in parallel (test meshes are below kParallelMinItems
+/// Runs `f` with at most `threads` threads, every pass of two chunks or more and the blocks of
+/// a flood from kTestMinWave candidates on in parallel (test meshes are below kParallelMinItems
 /// and kParallelMinWave), then restores the defaults.
 template <class F>
 auto WithThreads(int threads, F &&f)
@@ -47,6 +48,22 @@ auto WithThreads(int threads, F &&f)
     vcg::tri::vsa::detail::ParallelMinWave() = vcg::tri::vsa::kParallelMinWave;
     return result;
 }
+
+/// While it lives, floods cut the faces into blocks of 2^`bits` faces (test meshes are one
+/// block at kFloodBlockBits) and exchange offers every `waves` waves.
+struct FloodInBlocks
+{
+    FloodInBlocks(int bits, int waves)
+    {
+        vcg::tri::vsa::detail::FloodBlockBits() = bits;
+        vcg::tri::vsa::detail::FloodExchangeWaves() = waves;
+    }
+    ~FloodInBlocks()
+    {
+        vcg::tri::vsa::detail::FloodBlockBits() = vcg::tri::vsa::detail::kFloodBlockBits;
+        vcg::tri::vsa::detail::FloodExchangeWaves() = vcg::tri::vsa::detail::kFloodExchangeWaves;
+    }
+};
 
 /// An n x n grid of quads (2 n^2 triangles) spanning origin + [0,1] u + [0,1] v: an open
 /// planar patch with a border, oriented along u x v.

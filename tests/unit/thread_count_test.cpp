@@ -133,6 +133,7 @@ TEST(ThreadCount, SumsOfListedItemsAreTheSameBitsAsSumsOverAll)
 
 TEST(ThreadCount, PartitionIsTheSameBitsOnAnyNumberOfThreads)
 {
+    const vsa_test::FloodInBlocks blocks(11, detail::kFloodExchangeWaves);  // floods on several threads
     struct Case
     {
         const char *mesh;
@@ -162,6 +163,7 @@ TEST(ThreadCount, PartitionIsTheSameBitsOnAnyNumberOfThreads)
 
 TEST(ThreadCount, MultilevelSeedingIsTheSameBitsOnAnyNumberOfThreads)
 {
+    const vsa_test::FloodInBlocks blocks(11, detail::kFloodExchangeWaves);  // floods on several threads
     const IndexedMesh im = Indexed("armadillo.off");
     const FaceGeometry g = ComputeFaceGeometry(im, true);
     const L2Metric metric(g);
@@ -185,6 +187,7 @@ TEST(ThreadCount, MultilevelSeedingIsTheSameBitsOnAnyNumberOfThreads)
 
 TEST(ThreadCount, ApproximateShapeIsTheSameBitsOnAnyNumberOfThreads)
 {
+    const vsa_test::FloodInBlocks blocks(11, detail::kFloodExchangeWaves);  // floods on several threads
     for (const char *name : {"sphere", "fandisk.off"}) {
         TMesh in;
         Load(name, in);

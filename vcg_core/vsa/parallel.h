@@ -30,9 +30,10 @@ constexpr int kChunkItems = 4096;
 /// slice (milliseconds), so only passes of that much work gain (measured in bench/README.md).
 constexpr size_t kParallelMinItems = size_t(1) << 17;
 
-/// Fewest candidates for which a wave of the flood (partition.h) wakes the other threads: a
-/// flood runs thousands of waves, and a wave this large is a fraction of a millisecond of work.
-constexpr size_t kParallelMinWave = 2048;
+/// Fewest candidates in the blocks' next waves for which the blocks of the flood (partition.h)
+/// run on every thread until their exchange: a flood has many thousand exchanges, and the waves
+/// that follow these candidates are a fraction of a millisecond of work.
+constexpr size_t kParallelMinWave = 256;
 
 namespace detail {
 /// kParallelMinItems, or what tests set to send small meshes down the parallel path.
@@ -42,7 +43,7 @@ inline size_t &ParallelMinItems()
     return minItems;
 }
 
-/// kParallelMinWave, or what tests set to send the waves of small floods to the threads.
+/// kParallelMinWave, or what tests set to send the blocks of small floods to the threads.
 inline size_t &ParallelMinWave()
 {
     static size_t minWave = kParallelMinWave;

@@ -173,23 +173,33 @@ private:
     uint64_t summary_ = 0;                              ///< bit w: words_[w] != 0
 };
 
-/// What one thread of a flood keeps: the candidates it queued, and the faces it labelled in the
-/// current wave. A cache line of its own: the lanes of two threads must not share one.
-struct alignas(64) FloodLane
+/// A block of the flood: faces [b << FloodBlockBits(), (b + 1) << FloodBlockBits()), flooded on
+/// their own between two exchanges (see detail::Flooding). A cache line of its own: two threads
+/// flood two blocks at once.
+struct alignas(64) FloodBlock
 {
-    RankBuckets later;                 ///< candidates of ranks after the current one
-    std::vector<FloodCandidate> next;  ///< candidates for the next wave of the current rank
-    std::vector<int> labelled;         ///< faces labelled in the current wave
+    RankBuckets later;                 ///< candidates of ranks after `rank`
+    std::vector<FloodCandidate> next;  ///< candidates of `rank` for its next wave
+    std::vector<FloodCandidate> wave;  ///< the wave being decided
+    std::vector<int> labelled;         ///< faces labelled in that wave
+    std::vector<FloodCandidate> out;   ///< offers to other blocks' faces, until the exchange
+    FloodRanks::Rank rank = 0;         ///< the rank its waves run at
+    uint32_t lastWave = ~uint32_t(0);  ///< the last wave it ran at that rank
+    size_t decided = 0;                ///< candidates decided since the last exchange
+
+    /// The rank of its next wave, FloodRanks::kNoRank when it has no candidates.
+    FloodRanks::Rank Pending() const { return next.empty() ? later.Lowest() : rank; }
 };
 
-/// Whether a large wave of the flood runs on every thread or on the calling one: whichever took
-/// less time per candidate in the last waves that ran that way. On a busy machine a wave on
-/// every thread waits for a thread the system put aside, often longer than one thread takes
-/// alone; the labels are the same either way, only the time differs.
+/// Whether the blocks of a flood run on every thread or on the calling one until their next
+/// exchange, when they have many candidates: whichever took less time per candidate in the last
+/// exchanges that ran that way. On a busy machine the blocks on every thread wait for a thread
+/// the system put aside, often longer than one thread takes alone; the labels are the same
+/// either way, only the time differs.
 class WavePolicy
 {
 public:
-    /// How the next large wave runs: true on every thread.
+    /// How the blocks run until the next exchange: true on every thread.
     bool Choose()
     {
         if (perCandidate_[0] == 0) return false;  // each way measured once first
@@ -208,8 +218,8 @@ public:
     }
 
 private:
-    static constexpr int kProbeWaves = 64;  ///< large waves between two runs the slower way
-    static constexpr double kWeight = 0.25;  ///< of the latest wave in the running mean
+    static constexpr int kProbeWaves = 64;  ///< exchanges with many candidates between two runs the slower way
+    static constexpr double kWeight = 0.25;  ///< of the latest exchange in the running mean
     double perCandidate_[2] = {0, 0};       ///< seconds, on one thread and on every thread
     int sinceProbe_ = 0;
 };
@@ -228,8 +238,8 @@ struct PartitionWorkspace
     struct alignas(64) Node
     {
         /// The smallest (key << 32) | region (QueuedWord) offered this face during a flood: the
-        /// one candidate that will label it. One word, so that offers of the same wave from
-        /// several threads are decided by one atomic minimum, and claims need no atomics.
+        /// one candidate that will label it: a claim compares one word. Only the thread flooding
+        /// the face's block reads or writes it.
         uint64_t queued;
         int label;  ///< the face's region once labelled, kFreeLabel while free
         Neighbors neighbors;
@@ -239,8 +249,8 @@ struct PartitionWorkspace
     };
     std::vector<Node> nodes;
     FloodRanks ranks;
-    std::vector<FloodLane> lanes;        ///< per thread
-    std::vector<FloodCandidate> wave;    ///< the current wave's candidates
+    std::vector<FloodBlock> blocks;
+    std::vector<int> activeBlocks;  ///< those flooding until the next exchange
     WavePolicy wavePolicy;
     std::vector<int> visitMark;  ///< per face: the last growth that looked at it
     int visitStamp = 0;
@@ -271,39 +281,28 @@ inline uint64_t QueuedWord(uint32_t key, int region) { return uint64_t(key) << 3
 
 constexpr uint64_t kNothingQueued = ~uint64_t(0);
 
-/// Lowers `word` to `value` when that is smaller and returns the value it had, atomically when
-/// `kShared` (other threads lower it at the same time). Written with the compilers' builtins
-/// because std::atomic_ref is C++20 and the plugin builds as C++17 for MeshLab 2020.09.
-template <bool kShared, class T>
-T LowerTo(T &word, T value)
+/// Lowers `word` to `value` when that is smaller and returns the value it had.
+inline uint64_t LowerTo(uint64_t &word, uint64_t value)
 {
-    static_assert(sizeof(T) == 4 || sizeof(T) == 8, "a word");
-    if (!kShared) {
-        const T old = word;
-        if (value < old) word = value;
-        return old;
-    }
-#if defined(__GNUC__) || defined(__clang__)
-    T old = __atomic_load_n(&word, __ATOMIC_RELAXED);
-    while (value < old && !__atomic_compare_exchange_n(&word, &old, value, true, __ATOMIC_RELAXED, __ATOMIC_RELAXED)) {
-    }
+    const uint64_t old = word;
+    if (value < old) word = value;
     return old;
-#elif defined(_MSC_VER)
-    T old = word;
-    while (value < old) {
-        T seen;
-        if constexpr (sizeof(T) == 8)
-            seen = T(_InterlockedCompareExchange64(reinterpret_cast<volatile __int64 *>(&word), __int64(value),
-                                                   __int64(old)));
-        else
-            seen = T(_InterlockedCompareExchange(reinterpret_cast<volatile long *>(&word), long(value), long(old)));
-        if (seen == old) break;
-        old = seen;
-    }
-    return old;
-#else
-#error "LowerTo needs an atomic compare-and-swap"
-#endif
+}
+
+/// Blocks of the flood hold 2^FloodBlockBits() faces (kFloodBlockBits), or what tests set to
+/// flood small meshes in blocks.
+inline int &FloodBlockBits()
+{
+    static int bits = kFloodBlockBits;
+    return bits;
+}
+
+/// Waves a block of the flood runs between two exchanges (kFloodExchangeWaves), or what tests
+/// set: with 1, blocks flood exactly as one.
+inline int &FloodExchangeWaves()
+{
+    static int waves = kFloodExchangeWaves;
+    return waves;
 }
 
 template <class Graph, class Metric, class Neighbors>
@@ -329,9 +328,15 @@ void MarkNode(Node &node, int region)
     node.queued = kNothingQueued;
 }
 
-/// One flood in progress: the rank whose candidates are due, and the wave within it.
-/// Candidates of a wave are decided together, so the labels do not depend on the order in which
-/// they were queued, nor on the thread that queued them.
+/// One flood in progress, in blocks of faces. The faces are cut into blocks of
+/// 2^FloodBlockBits() (neighbours in space, once the faces are in space order). Each block
+/// floods its own faces at the lowest rank any block has candidates for, up to
+/// FloodExchangeWaves() waves, and keeps its offers to other blocks' faces; at the exchange
+/// that follows, those offers are made, block by block in order, and join their faces' next
+/// wave. Blocks flood at the same time on every thread, and the labels depend only on the
+/// blocks, never on the threads. A mesh of one block, or an exchange after every wave, floods
+/// exactly as the paper's queue ordered by rank, then wave (FloodRegions); otherwise an offer
+/// across a block's border waits for the exchange, up to FloodExchangeWaves() waves of its rank.
 template <class Metric, class Neighbors>
 class Flooding
 {
@@ -339,16 +344,18 @@ public:
     using Workspace = PartitionWorkspace<Metric, Neighbors>;
 
     Flooding(const Metric &metric, const std::vector<Proxy> &proxies, Workspace &ws)
-        : metric_(metric), proxies_(proxies), ws_(ws)
+        : metric_(metric), proxies_(proxies), ws_(ws), blockBits_(std::min(std::max(0, FloodBlockBits()), 30)),
+          exchangeWaves_(std::max(1, FloodExchangeWaves()))
     {
         ws_.ranks.Reset(metric.ErrorScale());
-        ws_.lanes.resize(size_t(MaxThreads()));
-        for (FloodLane &lane : ws_.lanes) {  // a flood stopped early left candidates behind
-            lane.later.Clear();
-            lane.next.clear();
-            lane.labelled.clear();
+        ws_.blocks.resize(std::max<size_t>(1, (ws_.nodes.size() + (size_t(1) << blockBits_) - 1) >> blockBits_));
+        for (FloodBlock &block : ws_.blocks) {  // a flood stopped early left candidates behind
+            block.later.Clear();
+            block.next.clear();
+            block.out.clear();
+            block.rank = 0;
+            block.lastWave = ~uint32_t(0);
         }
-        ws_.wave.clear();
     }
 
     /// Labels the seeds, (region, face) pairs, and floods from them.
@@ -356,125 +363,147 @@ public:
     {
         for (const auto &seed : seeds) ws_.nodes[seed.second].label = seed.first;
         // The seeds' offers come before wave 0 of rank 0: those of rank 0 make that wave.
-        current_ = 0;
-        wave_ = ~uint32_t(0);
         for (const auto &seed : seeds)
-            for (int g : ws_.nodes[seed.second].neighbors) Offer<false>(g, seed.first, ws_.lanes[0]);
-        TakeNextWave();
+            for (int g : ws_.nodes[seed.second].neighbors)
+                if (g >= 0) Offer(BlockOf(g), g, seed.first);
         for (;;) {
-            for (wave_ = 0; !ws_.wave.empty(); ++wave_) {
-                RunWave();
-                TakeNextWave();
+            FloodRanks::Rank rank = FloodRanks::kNoRank;
+            for (const FloodBlock &block : ws_.blocks) rank = std::min(rank, block.Pending());
+            if (rank == FloodRanks::kNoRank) return;
+            size_t candidates = 0;
+            ws_.activeBlocks.clear();
+            for (int b = 0; b < int(ws_.blocks.size()); ++b) {
+                FloodBlock &block = ws_.blocks[size_t(b)];
+                if (block.Pending() != rank) continue;
+                if (block.rank != rank) Enter(block, rank);
+                ws_.activeBlocks.push_back(b);
+                candidates += block.next.size();
             }
-            current_ = FloodRanks::kNoRank;
-            for (const FloodLane &lane : ws_.lanes) current_ = std::min(current_, lane.later.Lowest());
-            if (current_ == FloodRanks::kNoRank) return;
-            for (FloodLane &lane : ws_.lanes) lane.later.MoveOut(current_, ws_.wave);
+            FloodBlocks(candidates);
+            Exchange(rank);
         }
     }
 
 private:
-    /// Candidates per piece of a wave handed to a thread: a few microseconds of work each.
-    static constexpr int kWavePiece = 512;
+    FloodBlock &BlockOf(int face) { return ws_.blocks[size_t(face) >> blockBits_]; }
 
-    /// Gathers the candidates the last wave queued for the next one.
-    void TakeNextWave()
+    /// Makes `rank` the block's current one: its candidates of that rank make its wave 0.
+    static void Enter(FloodBlock &block, FloodRanks::Rank rank)
     {
-        ws_.wave.clear();
-        for (FloodLane &lane : ws_.lanes) AppendAndEmpty(lane.next, ws_.wave);
+        block.rank = rank;
+        block.lastWave = ~uint32_t(0);
+        block.later.MoveOut(rank, block.next);
     }
 
-    /// Labels the free faces of the wave's candidates, each with the lowest region offered it
-    /// in this wave, then offers their free neighbours to their regions. On every thread when
-    /// the wave is large; the labels are the same either way.
-    void RunWave()
+    /// Floods the active blocks at their rank, on every thread when there is enough to do
+    /// (`candidates` to start with); the labels are the same either way.
+    void FloodBlocks(size_t candidates)
     {
-        const std::vector<FloodCandidate> &wave = ws_.wave;
-        progress_.Count(int(wave.size()));  // on the calling thread, before the others start
-        if (MaxThreads() == 1 || wave.size() < detail::ParallelMinWave()) {
-            RunWaveAlone();
-            return;
+        size_t decided;  // counted on the calling thread, after the others are done
+        if (ws_.activeBlocks.size() > 1 && MaxThreads() > 1 && candidates >= detail::ParallelMinWave()) {
+            // Tests that lower the bound send every such exchange to the threads.
+            const bool shared = detail::ParallelMinWave() < kParallelMinWave || ws_.wavePolicy.Choose();
+            const auto start = std::chrono::steady_clock::now();
+            if (shared) RunBlocksShared();
+            else RunBlocksAlone();
+            decided = TakeDecided();
+            ws_.wavePolicy.Record(shared, std::max<size_t>(1, decided),
+                                  std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+        } else {
+            RunBlocksAlone();
+            decided = TakeDecided();
         }
-        // Tests that lower the bound send every wave above it to the threads.
-        const bool shared = detail::ParallelMinWave() < kParallelMinWave || ws_.wavePolicy.Choose();
-        const auto start = std::chrono::steady_clock::now();
-        if (shared) RunWaveShared();
-        else RunWaveAlone();
-        ws_.wavePolicy.Record(shared, wave.size(),
-                              std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+        progress_.Count(int(std::min<size_t>(decided, size_t(std::numeric_limits<int>::max()))));
     }
 
-    void RunWaveAlone()
+    /// The candidates the active blocks decided since the last exchange; their counts restart.
+    size_t TakeDecided()
     {
-        Claim(0, ws_.wave.size(), ws_.lanes[0]);
-        OfferNeighbours<false>(ws_.lanes[0]);
+        size_t decided = 0;
+        for (int b : ws_.activeBlocks) decided += std::exchange(ws_.blocks[size_t(b)].decided, 0);
+        return decided;
     }
 
-    void RunWaveShared()
+    void RunBlocksAlone()
+    {
+        for (int b : ws_.activeBlocks) RunBlock(ws_.blocks[size_t(b)]);
+    }
+
+    void RunBlocksShared()
     {
 #ifdef _OPENMP
-        const size_t size = ws_.wave.size();
-        const int pieces = int((size + kWavePiece - 1) / kWavePiece);
-#pragma omp parallel
-        {
-            FloodLane &lane = ws_.lanes[size_t(ThreadIndex())];
-#pragma omp for schedule(dynamic, 1)
-            for (int p = 0; p < pieces; ++p)
-                Claim(size_t(p) * kWavePiece, std::min(size, size_t(p + 1) * kWavePiece), lane);
-            // Every claim of the wave is in (the loop's barrier): the labels are final.
-            OfferNeighbours<true>(lane);
-        }
+        const int active = int(ws_.activeBlocks.size());
+#pragma omp parallel for schedule(dynamic, 1)
+        for (int k = 0; k < active; ++k) RunBlock(ws_.blocks[size_t(ws_.activeBlocks[size_t(k)])]);
 #else
-        RunWaveAlone();
+        RunBlocksAlone();
 #endif
     }
 
-    /// Labels the faces of the wave's candidates that are still queued for them: one per face,
-    /// so no two threads write the same label.
-    void Claim(size_t begin, size_t end, FloodLane &lane)
+    /// Runs the block's waves at its rank until none is left: each labels the free faces of
+    /// its candidates, each with the lowest region offered it in that wave, then offers their
+    /// free neighbours to their regions (those in other blocks later, at the exchange).
+    void RunBlock(FloodBlock &block)
     {
-        const uint32_t key = FloodKey(current_, wave_);
-        for (size_t i = begin; i < end; ++i) {
-            const FloodCandidate c = ws_.wave[i];
-            auto &node = ws_.nodes[c.face];
-            if (node.queued != QueuedWord(key, c.region)) continue;
-            node.label = c.region;
-            lane.labelled.push_back(c.face);
+        for (int waves = 0; waves < exchangeWaves_ && !block.next.empty(); ++waves) {
+            ++block.lastWave;
+            block.wave.swap(block.next);
+            block.decided += block.wave.size();
+            const uint32_t key = FloodKey(block.rank, block.lastWave);
+            for (const FloodCandidate &c : block.wave) {
+                auto &node = ws_.nodes[size_t(c.face)];
+                if (node.queued != QueuedWord(key, c.region)) continue;
+                node.label = c.region;
+                block.labelled.push_back(c.face);
+            }
+            block.wave.clear();
+            for (int f : block.labelled) {
+                const int region = ws_.nodes[size_t(f)].Region();
+                for (int g : ws_.nodes[size_t(f)].neighbors) {
+                    if (g < 0) continue;
+                    FloodBlock &to = BlockOf(g);
+                    if (&to == &block) Offer(block, g, region);
+                    else block.out.push_back({g, region});
+                }
+            }
+            block.labelled.clear();
         }
     }
 
-    template <bool kShared>
-    void OfferNeighbours(FloodLane &lane)
+    /// Makes the offers the blocks kept for other blocks' faces, block by block in order.
+    void Exchange(FloodRanks::Rank rank)
     {
-        for (int f : lane.labelled) {
-            const int region = ws_.nodes[f].Region();
-            for (int g : ws_.nodes[f].neighbors) Offer<kShared>(g, region, lane);
+        for (int b : ws_.activeBlocks) {
+            FloodBlock &from = ws_.blocks[size_t(b)];
+            for (const FloodCandidate &c : from.out) {
+                FloodBlock &to = BlockOf(c.face);
+                if (to.rank != rank) Enter(to, rank);
+                Offer(to, c.face, c.region);
+            }
+            from.out.clear();
         }
-        lane.labelled.clear();
     }
 
-    /// Queues free face `face` for `region`: in the next wave when its error ranks at or below
-    /// the current rank, else in wave 0 of its rank. Not when a candidate due earlier is queued
-    /// for it already: that one decides the face first.
-    template <bool kShared>
-    void Offer(int face, int region, FloodLane &lane)
+    /// Queues free face `face` of `block` for `region`: in the block's next wave when its error
+    /// ranks at or below the block's rank, else in wave 0 of its rank. Not when a candidate due
+    /// earlier is queued for it already: that one decides the face first.
+    void Offer(FloodBlock &block, int face, int region)
     {
-        if (face < 0) return;
-        auto &node = ws_.nodes[face];
+        auto &node = ws_.nodes[size_t(face)];
         if (node.label != kFreeLabel) return;  // no label changes while neighbours are offered
         const FloodRanks::Rank rank = ws_.ranks.RankOf(metric_.Error(node.data, proxies_[region]));
-        const bool now = rank <= current_;
-        const uint64_t word = QueuedWord(now ? FloodKey(current_, wave_ + 1) : FloodKey(rank, 0), region);
-        if (LowerTo<kShared>(node.queued, word) <= word) return;
-        if (now) lane.next.push_back({face, region});
-        else lane.later.Push(rank, {face, region});
+        const bool now = rank <= block.rank;
+        const uint64_t word = QueuedWord(now ? FloodKey(block.rank, block.lastWave + 1) : FloodKey(rank, 0), region);
+        if (LowerTo(node.queued, word) <= word) return;
+        if (now) block.next.push_back({face, region});
+        else block.later.Push(rank, {face, region});
     }
 
     const Metric &metric_;
     const std::vector<Proxy> &proxies_;
     Workspace &ws_;
-    FloodRanks::Rank current_ = 0;  ///< the rank whose waves run
-    uint32_t wave_ = 0;             ///< the wave within it
+    int blockBits_;
+    int exchangeWaves_;
     ProgressCounter progress_;
 };
 
@@ -520,8 +549,8 @@ bool TakeLabel(Node &node, int &label)
 /// in waves, wave t + 1 holding what the faces labelled in wave t offered at that rank or
 /// below, so that a region grows breadth-first through faces it fits about equally well. The
 /// candidates of one wave are decided together, a face going to the lowest region offered it
-/// in that wave: each wave runs on every thread when it is large, and the labels are the same
-/// on any number of threads. A candidate due after one already queued for the same face could
+/// in that wave. Large meshes flood in blocks of faces, on every thread (detail::Flooding), and
+/// the labels are the same on any number of threads. A candidate due after one already queued for the same face could
 /// never label it, so it is not queued at all.
 /// Returns how many free faces no seed could reach (none when every component has a seed).
 template <class Graph, class Metric, class Neighbors>

@@ -17,6 +17,10 @@ constexpr double kTeleportStall = 1e-3;  ///< energy change per iteration below 
 // The snapshot (indexed_mesh.h).
 constexpr int kSpatialOrderMinFaces = 1 << 16;  ///< faces in space order from here: 0.78 of the time at 75k faces, no gain measured at 13k
 
+// The flood (partition.h).
+constexpr int kFloodBlockBits = 16;        ///< 2^16 faces per block flooded on its own: 2^14 cost 2.9% energy at 3.3M faces for no speed
+constexpr int kFloodExchangeWaves = 8;     ///< waves between exchanges: fewer exchanges (one per rank) cost 8% energy on gear-mid3 at k = 50
+
 // Multilevel hierarchical seeding (seeding.h).
 constexpr int kMultilevelFaces = 100000;  ///< seed on patches from this many faces: below, faces take a second at most
 constexpr int kMaxPatchFaces = 32;        ///< a coarse round then costs about 1/32 of one on the faces
