@@ -440,9 +440,9 @@ private:
 #endif
     }
 
-    /// Runs the block's waves at its rank until none is left: each labels the free faces of
-    /// its candidates, each with the lowest region offered it in that wave, then offers their
-    /// free neighbours to their regions (those in other blocks later, at the exchange).
+    /// Runs up to FloodExchangeWaves() of the block's waves at its rank: each labels the free
+    /// faces of its candidates, each with the lowest region offered it in that wave, then offers
+    /// their free neighbours to their regions (those in other blocks at the exchange).
     void RunBlock(FloodBlock &block)
     {
         for (int waves = 0; waves < exchangeWaves_ && !block.next.empty(); ++waves) {
