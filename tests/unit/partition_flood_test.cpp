@@ -181,10 +181,13 @@ std::vector<int> FloodOnThreads(const IndexedMesh &im, const Metric &metric, con
 TEST(PartitionFlood, LabelsAreTheTextbookFloodsOnARealMesh)
 {
     // In one block (fandisk is smaller than one at kFloodBlockBits), and in 13 blocks of 1024
-    // faces whose offers across borders are made before the next wave; on 1, 2 and 3 threads.
+    // faces whose offers across borders are made before the next wave of the same rank; on 1,
+    // 2 and 3 threads.
     const IndexedMesh im = vsa_test::LoadCgalMesh("fandisk.off");
     for (int blockBits : {detail::kFloodBlockBits, 10}) {
-        const vsa_test::FloodInBlocks blocks(blockBits, blockBits == 10 ? 1 : detail::kFloodExchangeWaves);
+        const bool small = blockBits == 10;
+        const vsa_test::FloodInBlocks blocks(blockBits, small ? 1 : detail::kFloodExchangeWaves,
+                                             small ? 0 : detail::kFloodWindowCandidates);
         ForBothMetrics(im, [&](const auto &metric, const FaceGeometry &g, bool) {
             const RegionState s = SeededState(im, metric, g, 60, 11);
             const std::vector<int> textbook = TextbookFlood(im, metric, s.partition.proxies, s.seeds);
@@ -197,9 +200,9 @@ TEST(PartitionFlood, LabelsAreTheTextbookFloodsOnARealMesh)
 
 TEST(PartitionFlood, BlocksFloodTheSameOnAnyNumberOfThreads)
 {
-    // With offers across blocks kept for kFloodExchangeWaves waves, the labels differ from the
-    // textbook flood near the blocks' borders, but not with the threads, and the regions are
-    // still connected and cover the mesh.
+    // With offers across blocks kept for kFloodExchangeWaves waves, and for windows of ranks,
+    // the labels differ from the textbook flood near the blocks' borders, but not with the
+    // threads, and the regions are still connected and cover the mesh.
     const IndexedMesh im = vsa_test::LoadCgalMesh("fandisk.off");
     const vsa_test::FloodInBlocks blocks(10, detail::kFloodExchangeWaves);
     ForBothMetrics(im, [&](const auto &metric, const FaceGeometry &g, bool) {
@@ -208,7 +211,24 @@ TEST(PartitionFlood, BlocksFloodTheSameOnAnyNumberOfThreads)
         EXPECT_EQ(vsa_test::CheckPartition(im, reference, 60), "");
         for (int threads : {2, 3}) EXPECT_EQ(FloodOnThreads(im, metric, s, threads), reference) << threads << " threads";
         EXPECT_NE(reference, TextbookFlood(im, metric, s.partition.proxies, s.seeds));
+        const vsa_test::FloodInBlocks rankByRank(10, detail::kFloodExchangeWaves, 0);
+        EXPECT_NE(reference, FloodOnThreads(im, metric, s, 1)) << "the windows of ranks changed nothing";
     });
+}
+
+TEST(PartitionFlood, WavePolicyOutlastsOneSlowExchangeButNotALoadedMachine)
+{
+    // Timed at 40 ns a candidate alone and 20 ns on every thread, the blocks go to the threads.
+    WavePolicy policy;
+    policy.Record(false, 1000, 40e-6);
+    policy.Record(true, 1000, 20e-6);
+    EXPECT_TRUE(policy.Choose());
+    // One exchange that waited a millisecond for a thread the system put aside changes nothing...
+    policy.Record(true, 1000, 1e-3);
+    EXPECT_TRUE(policy.Choose());
+    // ...but a few in a row, as on a loaded machine, send the blocks back to the calling thread.
+    for (int slow = 0; slow < 8; ++slow) policy.Record(true, 1000, 1e-3);
+    EXPECT_FALSE(policy.Choose());
 }
 
 TEST(PartitionFlood, TiesGrowBreadthFirstOnACube)

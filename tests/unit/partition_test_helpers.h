@@ -14,6 +14,7 @@
 
 #include <cstdint>
 #include <string>
+#include <utility>
 #include <vector>
 
 #ifdef _OPENMP
@@ -50,19 +51,25 @@ auto WithThreads(int threads, F &&f)
 }
 
 /// While it lives, floods cut the faces into blocks of 2^`bits` faces (test meshes are one
-/// block at kFloodBlockBits) and exchange offers every `waves` waves.
+/// block at kFloodBlockBits) and exchange offers every `waves` waves of a rank, and once
+/// `windowCandidates` candidates wait in the ranks flooded since the last exchange.
 struct FloodInBlocks
 {
-    FloodInBlocks(int bits, int waves)
+    FloodInBlocks(int bits, int waves, int windowCandidates = vcg::tri::vsa::detail::kFloodWindowCandidates)
+        : bits_(std::exchange(vcg::tri::vsa::detail::FloodBlockBits(), bits)),
+          waves_(std::exchange(vcg::tri::vsa::detail::FloodExchangeWaves(), waves)),
+          windowCandidates_(std::exchange(vcg::tri::vsa::detail::FloodWindowCandidates(), windowCandidates))
     {
-        vcg::tri::vsa::detail::FloodBlockBits() = bits;
-        vcg::tri::vsa::detail::FloodExchangeWaves() = waves;
     }
-    ~FloodInBlocks()
+    ~FloodInBlocks()  // what was set before, so that one can live within another
     {
-        vcg::tri::vsa::detail::FloodBlockBits() = vcg::tri::vsa::detail::kFloodBlockBits;
-        vcg::tri::vsa::detail::FloodExchangeWaves() = vcg::tri::vsa::detail::kFloodExchangeWaves;
+        vcg::tri::vsa::detail::FloodBlockBits() = bits_;
+        vcg::tri::vsa::detail::FloodExchangeWaves() = waves_;
+        vcg::tri::vsa::detail::FloodWindowCandidates() = windowCandidates_;
     }
+
+private:
+    int bits_, waves_, windowCandidates_;
 };
 
 /// An n x n grid of quads (2 n^2 triangles) spanning origin + [0,1] u + [0,1] v: an open

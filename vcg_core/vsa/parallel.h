@@ -30,10 +30,10 @@ constexpr int kChunkItems = 4096;
 /// slice (milliseconds), so only passes of that much work gain (measured in bench/README.md).
 constexpr size_t kParallelMinItems = size_t(1) << 17;
 
-/// Fewest candidates in the blocks' next waves for which the blocks of the flood (partition.h)
-/// run on every thread until their exchange: a flood has many thousand exchanges, and the waves
-/// that follow these candidates are a fraction of a millisecond of work.
-constexpr size_t kParallelMinWave = 256;
+/// Fewest candidates waiting in an exchange's window for which the blocks of the flood
+/// (partition.h) run on every thread until the exchange: below, the work is tens of
+/// microseconds, about what waking the threads costs, and its timings would mislead WavePolicy.
+constexpr size_t kParallelMinWave = 4096;
 
 namespace detail {
 /// kParallelMinItems, or what tests set to send small meshes down the parallel path.

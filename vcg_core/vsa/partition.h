@@ -128,6 +128,9 @@ public:
         b.push_back(c);
     }
 
+    /// How many candidates wait at `rank`.
+    size_t Count(Rank rank) const { return words_[rank >> 6] >> (rank & 63) & 1 ? buckets_[rank].size() : 0; }
+
     /// Appends the candidates of `rank` to `to`, in push order, and forgets them.
     void MoveOut(Rank rank, std::vector<FloodCandidate> &to)
     {
@@ -212,14 +215,16 @@ public:
 
     void Record(bool shared, size_t candidates, double seconds)
     {
-        const double x = seconds / double(candidates);
         double &p = perCandidate_[shared];
-        p = p == 0 ? x : p + kWeight * (x - p);
+        const double x = seconds / double(candidates);
+        // One exchange that waited for a thread put aside once moves the mean a little only.
+        p = p == 0 ? x : p + kWeight * (std::min(x, kMaxRise * p) - p);
     }
 
 private:
     static constexpr int kProbeWaves = 64;  ///< exchanges with many candidates between two runs the slower way
     static constexpr double kWeight = 0.25;  ///< of the latest exchange in the running mean
+    static constexpr double kMaxRise = 2;    ///< the most an exchange counts for, times the mean
     double perCandidate_[2] = {0, 0};       ///< seconds, on one thread and on every thread
     int sinceProbe_ = 0;
 };
@@ -305,6 +310,14 @@ inline int &FloodExchangeWaves()
     return waves;
 }
 
+/// Candidates an exchange of the flood waits for, across ranks (kFloodWindowCandidates), or what
+/// tests set: with 0, every exchange floods one rank.
+inline int &FloodWindowCandidates()
+{
+    static int candidates = kFloodWindowCandidates;
+    return candidates;
+}
+
 template <class Graph, class Metric, class Neighbors>
 void PrepareNodes(const Graph &mesh, const Metric &metric, PartitionWorkspace<Metric, Neighbors> &ws)
 {
@@ -329,14 +342,15 @@ void MarkNode(Node &node, int region)
 }
 
 /// One flood in progress, in blocks of faces. The faces are cut into blocks of
-/// 2^FloodBlockBits() (neighbours in space, once the faces are in space order). Each block
-/// floods its own faces at the lowest rank any block has candidates for, up to
-/// FloodExchangeWaves() waves, and keeps its offers to other blocks' faces; at the exchange
-/// that follows, those offers are made, block by block in order, and join their faces' next
-/// wave. Blocks flood at the same time on every thread, and the labels depend only on the
-/// blocks, never on the threads. A mesh of one block, or an exchange after every wave, floods
-/// exactly as the paper's queue ordered by rank, then wave (FloodRegions); otherwise an offer
-/// across a block's border waits for the exchange, up to FloodExchangeWaves() waves of its rank.
+/// 2^FloodBlockBits() (neighbours in space, once the faces are in space order). Between two
+/// exchanges, the blocks flood their own faces through a window of ranks: from the lowest any
+/// block has candidates for, on while fewer than FloodWindowCandidates() candidates wait (up to
+/// kFloodWindowRanks ranks), with at most FloodExchangeWaves() waves of a rank. Each keeps its
+/// offers to other blocks' faces; at the exchange, those offers are made, block by block in
+/// order, and join their faces' next wave. Blocks flood at the same time on every thread, and
+/// the labels depend only on the blocks, never on the threads. A mesh of one block, or
+/// exchanges after every wave of one rank, flood exactly as the paper's queue ordered by rank,
+/// then wave (FloodRegions); otherwise an offer across a block's border waits for the exchange.
 template <class Metric, class Neighbors>
 class Flooding
 {
@@ -371,20 +385,29 @@ public:
             for (const FloodBlock &block : ws_.blocks) rank = std::min(rank, block.Pending());
             if (rank == FloodRanks::kNoRank) return;
             size_t candidates = 0;
+            last_ = WindowEnd(rank, candidates);
             ws_.activeBlocks.clear();
-            for (int b = 0; b < int(ws_.blocks.size()); ++b) {
-                FloodBlock &block = ws_.blocks[size_t(b)];
-                if (block.Pending() != rank) continue;
-                if (block.rank != rank) Enter(block, rank);
-                ws_.activeBlocks.push_back(b);
-                candidates += block.next.size();
-            }
+            for (int b = 0; b < int(ws_.blocks.size()); ++b)
+                if (ws_.blocks[size_t(b)].Pending() <= last_) ws_.activeBlocks.push_back(b);
             FloodBlocks(candidates);
-            Exchange(rank);
+            Exchange();
         }
     }
 
 private:
+    /// The last rank of the window that starts at `rank`: the first by which
+    /// FloodWindowCandidates() candidates wait, or the window's widest. `waiting` counts them.
+    FloodRanks::Rank WindowEnd(FloodRanks::Rank rank, size_t &waiting) const
+    {
+        const size_t wanted = size_t(std::max(0, FloodWindowCandidates()));
+        const FloodRanks::Rank end = std::min<FloodRanks::Rank>(FloodRanks::kRanks, rank + kFloodWindowRanks);
+        for (FloodRanks::Rank r = rank;; ++r) {
+            for (const FloodBlock &block : ws_.blocks)
+                waiting += (block.rank == r ? block.next.size() : 0) + block.later.Count(r);
+            if (waiting >= wanted || r + 1 == end) return r;
+        }
+    }
+
     FloodBlock &BlockOf(int face) { return ws_.blocks[size_t(face) >> blockBits_]; }
 
     /// Makes `rank` the block's current one: its candidates of that rank make its wave 0.
@@ -426,7 +449,7 @@ private:
 
     void RunBlocksAlone()
     {
-        for (int b : ws_.activeBlocks) RunBlock(ws_.blocks[size_t(b)]);
+        for (int b : ws_.activeBlocks) RunWindow(ws_.blocks[size_t(b)]);
     }
 
     void RunBlocksShared()
@@ -434,10 +457,25 @@ private:
 #ifdef _OPENMP
         const int active = int(ws_.activeBlocks.size());
 #pragma omp parallel for schedule(dynamic, 1)
-        for (int k = 0; k < active; ++k) RunBlock(ws_.blocks[size_t(ws_.activeBlocks[size_t(k)])]);
+        for (int k = 0; k < active; ++k) RunWindow(ws_.blocks[size_t(ws_.activeBlocks[size_t(k)])]);
 #else
         RunBlocksAlone();
 #endif
+    }
+
+    /// Floods the block through the window's ranks, in order, up to the rank where it runs
+    /// FloodExchangeWaves() waves: the offers other blocks kept for that rank come first.
+    void RunWindow(FloodBlock &block)
+    {
+        for (;;) {
+            if (block.next.empty()) {
+                const FloodRanks::Rank rank = block.later.Lowest();
+                if (rank > last_) return;  // kNoRank too
+                Enter(block, rank);
+            }
+            RunBlock(block);
+            if (!block.next.empty()) return;
+        }
     }
 
     /// Runs up to FloodExchangeWaves() of the block's waves at its rank: each labels the free
@@ -470,14 +508,15 @@ private:
         }
     }
 
-    /// Makes the offers the blocks kept for other blocks' faces, block by block in order.
-    void Exchange(FloodRanks::Rank rank)
+    /// Makes the offers the blocks kept for other blocks' faces, block by block in order. A block
+    /// with no wave pending moves to the window's last rank: offers of ranks up to it are late.
+    void Exchange()
     {
         for (int b : ws_.activeBlocks) {
             FloodBlock &from = ws_.blocks[size_t(b)];
             for (const FloodCandidate &c : from.out) {
                 FloodBlock &to = BlockOf(c.face);
-                if (to.rank != rank) Enter(to, rank);
+                if (to.next.empty() && to.rank < last_) Enter(to, last_);
                 Offer(to, c.face, c.region);
             }
             from.out.clear();
@@ -504,6 +543,7 @@ private:
     Workspace &ws_;
     int blockBits_;
     int exchangeWaves_;
+    FloodRanks::Rank last_ = 0;  ///< the last rank of the window being flooded
     ProgressCounter progress_;
 };
 
