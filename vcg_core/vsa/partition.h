@@ -418,8 +418,8 @@ private:
         block.later.MoveOut(rank, block.next);
     }
 
-    /// Floods the active blocks at their rank, on every thread when there is enough to do
-    /// (`candidates` to start with); the labels are the same either way.
+    /// Floods the active blocks through the window, on every thread when there is enough to do
+    /// (`candidates` waiting in the window); the labels are the same either way.
     void FloodBlocks(size_t candidates)
     {
         size_t decided;  // counted on the calling thread, after the others are done

@@ -19,7 +19,7 @@ constexpr int kSpatialOrderMinFaces = 1 << 16;  ///< faces in space order from h
 
 // The flood (partition.h).
 constexpr int kFloodBlockBits = 16;        ///< 2^16 faces per block flooded on its own: 2^14 cost 2.9% energy at 3.3M faces for no speed
-constexpr int kFloodExchangeWaves = 8;     ///< waves between exchanges: fewer exchanges (one per rank) cost 8% energy on gear-mid3 at k = 50
+constexpr int kFloodExchangeWaves = 8;     ///< waves of one rank between exchanges: fewer exchanges (one per rank) cost 8% energy on gear-mid3 at k = 50
 constexpr int kFloodWindowCandidates = 1 << 14;  ///< an exchange spans ranks until this many candidates wait: enough work to gain from the threads
 constexpr int kFloodWindowRanks = 16;          ///< ranks per exchange at most: an offer across blocks comes late by a quarter of its error at most; 64 cost 0.5% energy
 
