@@ -110,3 +110,53 @@ TEST(MeshingSurface, NonManifoldVertexIsSplitPerFan)
     EXPECT_EQ(run.out.VN(), 8);  // each tetrahedron keeps its four corners
     EXPECT_EQ(run.out.FN(), 8);
 }
+
+TEST(MeshingSurface, WeldedVerticesAreSplitPerFanInOrderOfFirstUse)
+{
+    // Two spheres welded at many vertices that share no edge: each welded vertex has two fans,
+    // one per sphere, and splitting gives the second sphere's fan a vertex of its own.
+    TMesh sphere;
+    vcg::tri::Sphere(sphere, 3);
+    IndexedMesh im = BuildIndexedMesh(sphere);
+    const int vertices = im.VertexCount(), faces = im.FaceCount();
+    std::vector<char> welded(vertices, 0), blocked(vertices, 0);
+    int weldCount = 0;
+    for (int f = 0; f < faces; f += 7) {
+        const int v = im.faces[f][0];
+        if (blocked[v]) continue;
+        welded[v] = 1;
+        ++weldCount;
+        for (const auto &t : im.faces)  // its neighbours may not be welded too: no edge is shared
+            if (t[0] == v || t[1] == v || t[2] == v)
+                for (int w : t) blocked[w] = 1;
+    }
+    ASSERT_GT(weldCount, 20);
+    for (int v = 0; v < vertices; ++v) im.positions.push_back(im.positions[v] + Point3d(0, 0, 3));
+    for (int f = 0; f < faces; ++f) {
+        std::array<int, 3> t = im.faces[f];
+        for (int &v : t) v = welded[v] ? v : v + vertices;
+        im.faces.push_back(t);
+    }
+    MeshDiagnostics diag;
+    detail::LinkFaces(im, diag);
+    ASSERT_EQ(diag.nonManifoldEdges, 0);
+    EXPECT_EQ(detail::CountNonManifoldVertices(im), weldCount);
+
+    IndexedMesh split = im;
+    std::vector<int> sourceVertex;
+    EXPECT_EQ(detail::SplitVerticesPerFan(split, sourceVertex), weldCount);
+    ASSERT_EQ(split.VertexCount(), 2 * vertices);
+    int seen = 0;  // vertices are numbered as the corners first use them
+    for (const auto &t : split.faces)
+        for (int v : t) {
+            ASSERT_LE(v, seen);
+            seen += v == seen;
+        }
+    for (int v = 0; v < split.VertexCount(); ++v) EXPECT_EQ(split.positions[v], im.positions[sourceVertex[v]]);
+    for (int f = 0; f < faces; ++f)
+        for (int i = 0; i < 3; ++i) {
+            EXPECT_EQ(sourceVertex[split.faces[f][i]], im.faces[f][i]);
+            EXPECT_EQ(sourceVertex[split.faces[f + faces][i]], im.faces[f + faces][i]);
+            EXPECT_NE(split.faces[f][i], split.faces[f + faces][i]);
+        }
+}
