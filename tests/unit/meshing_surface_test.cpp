@@ -137,6 +137,7 @@ TEST(MeshingSurface, WeldedVerticesAreSplitPerFanInOrderOfFirstUse)
         for (int &v : t) v = welded[v] ? v : v + vertices;
         im.faces.push_back(t);
     }
+    im.diagnostics.reset();  // its faces changed: the links are made again below
     MeshDiagnostics diag;
     detail::LinkFaces(im, diag);
     ASSERT_EQ(diag.nonManifoldEdges, 0);
@@ -159,4 +160,65 @@ TEST(MeshingSurface, WeldedVerticesAreSplitPerFanInOrderOfFirstUse)
             EXPECT_EQ(sourceVertex[split.faces[f + faces][i]], im.faces[f + faces][i]);
             EXPECT_NE(split.faces[f][i], split.faces[f + faces][i]);
         }
+}
+
+namespace {
+
+/// Checks that the surface of `im` built with the snapshot's links is the one built linking its
+/// faces again (no diagnostics kept), array by array; returns the first.
+MeshingSurface ExpectSameSurfaceAsRelinked(const IndexedMesh &im)
+{
+    IndexedMesh unlinked = im;
+    unlinked.diagnostics.reset();
+    MeshingSurface reused, relinked;
+    std::string error;
+    EXPECT_TRUE(BuildSurfaceTopology(im, reused, error)) << error;
+    EXPECT_TRUE(BuildSurfaceTopology(unlinked, relinked, error)) << error;
+    const auto same = [](const auto &a, const auto &b) {
+        return a.size() == b.size() && std::equal(a.begin(), a.end(), b.begin());
+    };
+    EXPECT_TRUE(same(reused.positions, relinked.positions));
+    EXPECT_TRUE(same(reused.sourceVertex, relinked.sourceVertex));
+    EXPECT_TRUE(same(reused.faces, relinked.faces));
+    EXPECT_TRUE(same(reused.neighbors, relinked.neighbors));
+    EXPECT_TRUE(same(reused.sourceFace, relinked.sourceFace));
+    EXPECT_TRUE(same(reused.vertexFaceOffset, relinked.vertexFaceOffset));
+    EXPECT_TRUE(same(reused.vertexFaces, relinked.vertexFaces));
+    EXPECT_EQ(reused.splitVertices, relinked.splitVertices);
+    EXPECT_EQ(reused.ignoredFaces, relinked.ignoredFaces);
+    return reused;
+}
+
+}  // namespace
+
+TEST(MeshingSurface, ReusesTheSnapshotsLinksAsIfLinkedAgain)
+{
+    TMesh torus;
+    MakeTorus(torus, 2, 0.5f, 40, 20);
+    {
+        // In space order, the corners first use the vertices out of their order: the surface
+        // numbers them anew, and must do so with the links reused too.
+        const SpatialOrderFrom everyMesh(1);
+        const IndexedMesh im = BuildIndexedMesh(torus, nullptr, FaceOrder::kSpatialWhenLarge);
+        ASSERT_TRUE(im.diagnostics.has_value());
+        const MeshingSurface s = ExpectSameSurfaceAsRelinked(im);
+        std::vector<int> identity(s.sourceVertex.size());
+        std::iota(identity.begin(), identity.end(), 0);
+        EXPECT_NE(static_cast<const std::vector<int> &>(s.sourceVertex), identity);
+        EXPECT_EQ(s.splitVertices, 0);
+    }
+    {
+        // Two tetrahedra sharing a vertex: linked, but with a vertex to split per fan.
+        TMesh m;
+        vsa_test::BuildFromLists(m, {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {-1, 0, 0}, {0, -1, 0}, {0, 0, -1}},
+                                 {{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}, {0, 5, 4}, {0, 4, 6}, {0, 6, 5}, {4, 5, 6}});
+        EXPECT_EQ(ExpectSameSurfaceAsRelinked(BuildIndexedMesh(m)).splitVertices, 1);
+    }
+    {
+        // A face that repeats a vertex is left out: the surface's faces are not the snapshot's.
+        TMesh m;
+        vsa_test::BuildFromLists(m, {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {1, 1, 1}},
+                                 {{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}, {4, 4, 1}});
+        EXPECT_EQ(ExpectSameSurfaceAsRelinked(BuildIndexedMesh(m)).ignoredFaces, 1);
+    }
 }

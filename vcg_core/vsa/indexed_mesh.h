@@ -14,6 +14,7 @@
 #include <cmath>
 #include <cstdint>
 #include <numeric>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <utility>
@@ -22,42 +23,6 @@
 namespace vcg {
 namespace tri {
 namespace vsa {
-
-/// A triangle mesh as flat arrays. Every stage of the pipeline indexes these by face and
-/// vertex number, so the hot loops never chase vcg pointers or per-face attributes.
-/// Only live faces and the live vertices they reference are kept, in container order or in
-/// space (FaceOrder).
-struct IndexedMesh
-{
-    std::vector<Point3d> positions;
-    std::vector<std::array<int, 3>> faces;  ///< vertex indices, in the input's orientation
-    /// neighbors[f][i] is the face across edge (faces[f][i], faces[f][(i+1)%3]), or -1 when
-    /// that edge is on the border or is shared by more than two faces: a non-manifold edge
-    /// cuts the surface, so regions never grow across it.
-    std::vector<std::array<int, 3>> neighbors;
-    std::vector<int> component;  ///< per face: connected component through `neighbors`
-    int componentCount = 0;
-    std::vector<int> sourceFace;    ///< face f is m.face[sourceFace[f]]
-    std::vector<int> sourceVertex;  ///< vertex v is m.vert[sourceVertex[v]]
-
-    int FaceCount() const { return int(faces.size()); }
-    int VertexCount() const { return int(positions.size()); }
-};
-
-/// Whether the three coordinates of p are finite.
-inline bool IsFinite(const Point3d &p) { return std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]); }
-
-/// The box of the finite points among `positions`.
-inline Box3d FiniteBox(const std::vector<Point3d> &positions)
-{
-    Box3d box;
-    for (const Point3d &p : positions)
-        if (IsFinite(p)) box.Add(p);
-    return box;
-}
-
-/// Whether triangle t uses a vertex twice: it has no area and no edges of its own.
-inline bool RepeatsVertex(const std::array<int, 3> &t) { return t[0] == t[1] || t[1] == t[2] || t[2] == t[0]; }
 
 /// What is wrong or unusual in an input mesh; each stage decides what it can accept.
 struct MeshDiagnostics
@@ -99,6 +64,45 @@ protected:
         if (unreferencedVertices) s << ", " << unreferencedVertices << " unreferenced vertices (ignored)";
     }
 };
+
+/// A triangle mesh as flat arrays. Every stage of the pipeline indexes these by face and
+/// vertex number, so the hot loops never chase vcg pointers or per-face attributes.
+/// Only live faces and the live vertices they reference are kept, in container order or in
+/// space (FaceOrder).
+struct IndexedMesh
+{
+    std::vector<Point3d> positions;
+    std::vector<std::array<int, 3>> faces;  ///< vertex indices, in the input's orientation
+    /// neighbors[f][i] is the face across edge (faces[f][i], faces[f][(i+1)%3]), or -1 when
+    /// that edge is on the border or is shared by more than two faces: a non-manifold edge
+    /// cuts the surface, so regions never grow across it.
+    std::vector<std::array<int, 3>> neighbors;
+    std::vector<int> component;  ///< per face: connected component through `neighbors`
+    int componentCount = 0;
+    std::vector<int> sourceFace;    ///< face f is m.face[sourceFace[f]]
+    std::vector<int> sourceVertex;  ///< vertex v is m.vert[sourceVertex[v]]
+    /// What linking these faces found (LinkAndDiagnose), kept so that the meshing surface need
+    /// not link them again; empty until they are linked. Whoever changes the faces after resets it.
+    std::optional<MeshDiagnostics> diagnostics;
+
+    int FaceCount() const { return int(faces.size()); }
+    int VertexCount() const { return int(positions.size()); }
+};
+
+/// Whether the three coordinates of p are finite.
+inline bool IsFinite(const Point3d &p) { return std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]); }
+
+/// The box of the finite points among `positions`.
+inline Box3d FiniteBox(const std::vector<Point3d> &positions)
+{
+    Box3d box;
+    for (const Point3d &p : positions)
+        if (IsFinite(p)) box.Add(p);
+    return box;
+}
+
+/// Whether triangle t uses a vertex twice: it has no area and no edges of its own.
+inline bool RepeatsVertex(const std::array<int, 3> &t) { return t[0] == t[1] || t[1] == t[2] || t[2] == t[0]; }
 
 namespace detail {
 
@@ -374,6 +378,7 @@ inline void LinkAndDiagnose(IndexedMesh &im, MeshDiagnostics &diag)
     diag.faces = im.FaceCount();
     diag.vertices = im.VertexCount();
     diag.components = im.componentCount;
+    im.diagnostics = diag;
 }
 
 }  // namespace detail

@@ -126,6 +126,33 @@ int TwinEdge(const Mesh &s, int f, int i)
     return -1;
 }
 
+/// Gives the corners of `m` new vertices, one per key (keyOf(corner), below keyCount), numbered
+/// in the order corners first use them; `sourceVertex` gets each new vertex's vertex of `m`.
+/// keyOf(corner) is asked before that corner gets its new vertex.
+template <class KeyOf>
+void NumberVerticesByFirstUse(IndexedMesh &m, size_t keyCount, KeyOf &&keyOf, std::vector<int> &sourceVertex)
+{
+    const int cornerCount = 3 * m.FaceCount();
+    std::vector<int> newVertex(keyCount, -1);
+    std::vector<Point3d> positions;
+    sourceVertex.clear();
+    ProgressCounter progress;
+    for (int c = 0; c < cornerCount; ++c) {
+        progress.Count();
+        int &vertex = m.faces[c / 3][c % 3];
+        int &fresh = newVertex[size_t(keyOf(c))];
+        if (fresh < 0) {
+            fresh = int(positions.size());
+            positions.push_back(m.positions[vertex]);
+            sourceVertex.push_back(vertex);
+        }
+        vertex = fresh;
+    }
+    positions.shrink_to_fit();  // the surface keeps these arrays: no room to spare
+    sourceVertex.shrink_to_fit();
+    m.positions.swap(positions);
+}
+
 /// Gives every fan of faces around a vertex of `m` (linked) its own vertex, so that each vertex
 /// has one fan (a disc, or a half-disc on the border). Corners are joined across linked edges.
 /// `sourceVertex` gets each vertex's vertex of `m` before; returns how many vertices it added.
@@ -142,31 +169,15 @@ inline int SplitVerticesPerFan(IndexedMesh &m, std::vector<int> &sourceVertex)
             Unite(cornerParent, 3 * f + i, 3 * g + (j + 1) % 3);
             Unite(cornerParent, 3 * f + (i + 1) % 3, 3 * g + j);
         }
-    std::vector<int> fanVertex(size_t(faceCount) * 3, -1);
-    std::vector<Point3d> positions;
-    sourceVertex.clear();
-    ProgressCounter progress;
-    for (int c = 0; c < 3 * faceCount; ++c) {
-        progress.Count();
-        const int root = FindRoot(cornerParent, c);
-        if (fanVertex[root] < 0) {
-            const int v = m.faces[c / 3][c % 3];
-            fanVertex[root] = int(positions.size());
-            positions.push_back(m.positions[v]);
-            sourceVertex.push_back(v);
-        }
-        m.faces[c / 3][c % 3] = fanVertex[root];
-    }
-    std::vector<char> used(m.positions.size(), 0);
+    const size_t inputVertexCount = m.positions.size();
+    NumberVerticesByFirstUse(m, cornerParent.size(), [&](int c) { return FindRoot(cornerParent, c); }, sourceVertex);
+    std::vector<char> used(inputVertexCount, 0);
     int inputVerticesUsed = 0;
     for (int v : sourceVertex)
         if (!used[v]) {
             used[v] = 1;
             ++inputVerticesUsed;
         }
-    positions.shrink_to_fit();  // the surface keeps these arrays: no room to spare
-    sourceVertex.shrink_to_fit();
-    m.positions.swap(positions);
     return int(m.positions.size()) - inputVerticesUsed;
 }
 
@@ -708,12 +719,26 @@ inline bool BuildSurfaceTopology(const IndexedMesh &im, MeshingSurface &s, std::
         error = "the mesh has no faces with three distinct vertices";
         return false;
     }
+    // With no face left out, the surface's faces are the snapshot's, which are linked already:
+    // its links and counts stand, and with one fan per vertex there is nothing to split.
+    const bool linked = s.ignoredFaces == 0 && im.diagnostics && im.neighbors.size() == im.faces.size();
     MeshDiagnostics diag;
-    detail::LinkFaces(kept, diag);
+    if (linked) {
+        kept.neighbors = im.neighbors;
+        diag = *im.diagnostics;
+    } else {
+        detail::LinkFaces(kept, diag);
+    }
     error = MeshingRefusal(diag);
     if (!error.empty()) return false;
     std::vector<int> sourceVertex;
-    s.splitVertices = detail::SplitVerticesPerFan(kept, sourceVertex);
+    if (linked && diag.nonManifoldVertices == 0) {
+        const size_t vertexCount = kept.positions.size();
+        detail::NumberVerticesByFirstUse(kept, vertexCount, [&](int c) { return kept.faces[c / 3][c % 3]; },
+                                         sourceVertex);
+    } else {
+        s.splitVertices = detail::SplitVerticesPerFan(kept, sourceVertex);
+    }
 
     std::vector<int> vertexOfCorner, vertexFaceOffset, vertexFaces;
     vertexOfCorner.reserve(kept.faces.size() * 3);
