@@ -768,7 +768,7 @@ inline bool AssignRegions(MeshingSurface &s, const std::vector<int> &faceRegion,
     std::vector<int> previousRegion;
     if (relabel) previousRegion.swap(s.faceRegion);
     s.regionCount = regionCount;
-    s.faceRegion.resize(s.FaceCount());
+    ResizeReporting(s.faceRegion, size_t(s.FaceCount()));  // fresh memory each trial
     ProgressCounter progress;
     for (int f = 0; f < s.FaceCount(); ++f, progress.Count()) s.faceRegion[f] = faceRegion[s.sourceFace[f]];
     std::vector<int>().swap(s.facePiece);  // one piece per region, and no memory for it
