@@ -1,6 +1,7 @@
 // Tests of vsa/meshing_surface.h.
 #include "meshing_fixtures.h"
 #include "meshing_test_util.h"
+#include "partition_test_helpers.h"
 #include "test_meshes.h"
 
 #include <vsa/meshing_surface.h>
@@ -220,5 +221,69 @@ TEST(MeshingSurface, ReusesTheSnapshotsLinksAsIfLinkedAgain)
         vsa_test::BuildFromLists(m, {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {1, 1, 1}},
                                  {{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}, {4, 4, 1}});
         EXPECT_EQ(ExpectSameSurfaceAsRelinked(BuildIndexedMesh(m)).ignoredFaces, 1);
+    }
+}
+
+namespace {
+
+/// A surface's cells and what is derived from them, as one string to compare.
+std::string CellFingerprint(const MeshingSurface &s)
+{
+    std::string print;
+    const auto add = [&print](const std::vector<int> &v) {
+        for (int x : v) print += std::to_string(x) + ',';
+        print += ';';
+    };
+    add(s.faceCell);
+    add(s.cellRegion);
+    add(s.cellComponentFace);
+    add(s.cellFaces);
+    for (const std::vector<int> &loop : s.cellLoop) add(loop);
+    for (const std::vector<int> &other : s.cellLoopOther) add(other);
+    add(std::vector<int>(s.junction.begin(), s.junction.end()));
+    return print;
+}
+
+}  // namespace
+
+TEST(MeshingSurface, CellsAreTheSameOnAnyNumberOfThreads)
+{
+    // Bands around the tube of a torus are rings, cut into two discs or more; every other band
+    // is cut across into patches, which are discs, and opposite bands' patches share regions,
+    // of two components each. Each region's cells are grown on a thread of their own and
+    // numbered afterwards; relabelling (a band split in two, a band merged into a ring) grows
+    // the changed regions again.
+    TMesh torus;
+    MakeTorus(torus, 2, 0.5f, 48, 24);
+    const IndexedMesh im = BuildIndexedMesh(torus);
+    const auto angle = [](double y, double x) { return std::atan2(y, x) + M_PI; };  // in [0, 2 pi]
+    const auto labels = [&](int variant) {
+        std::vector<int> label(im.FaceCount());
+        for (int f = 0; f < im.FaceCount(); ++f) {
+            const Point3d c = vsa_test::FaceCentroid(im, f);
+            const int band = std::min(7, int(angle(c[1], c[0]) / (2 * M_PI) * 8));
+            const Point3d axis(c[0], c[1], 0);
+            const int patch = std::min(3, int(angle(c[2], axis.Norm() - 2) / (2 * M_PI) * 4));
+            label[f] = band % 2 ? 8 + 4 * (band / 2 % 2) + patch : band;
+            if (variant == 1 && band == 0 && patch < 2) label[f] = 24;  // a ring split in two
+            if (variant == 1 && band == 3) label[f] = 2;                 // patches merged into a ring
+        }
+        return label;
+    };
+    std::string reference;
+    for (int threads : {1, 2, 3, 8}) {
+        const std::string print = WithThreads(threads, [&] {
+            std::string error, print;
+            MeshingSurface s, fresh;
+            EXPECT_TRUE(BuildMeshingSurface(im, labels(0), 24, s, error)) << error;
+            EXPECT_GT(s.CellCount(), 20);  // the rings are cut, the shared regions in two
+            print = CellFingerprint(s);
+            EXPECT_TRUE(AssignRegions(s, labels(1), 25, error)) << error;
+            EXPECT_TRUE(BuildMeshingSurface(im, labels(1), 25, fresh, error)) << error;
+            EXPECT_EQ(CellFingerprint(s), CellFingerprint(fresh)) << threads << " threads";
+            return print + CellFingerprint(s);
+        });
+        if (reference.empty()) reference = print;
+        EXPECT_TRUE(print == reference) << threads << " threads";
     }
 }

@@ -123,23 +123,32 @@ inline void Unite(std::vector<int> &parent, int a, int b)
 }
 
 /// Compressed lists, a counting sort: items of key k are list[offset[k] .. offset[k+1]), in
-/// increasing order; items with a negative key are left out.
-inline void BuildOffsets(const std::vector<int> &keyOfItem, int keyCount, std::vector<int> &offset,
-                         std::vector<int> &list)
+/// increasing order; items whose keyOf(item) is negative are left out.
+template <class KeyOf>
+void BuildOffsets(size_t itemCount, KeyOf &&keyOf, int keyCount, std::vector<int> &offset, std::vector<int> &list)
 {
     offset.assign(size_t(keyCount) + 1, 0);
     ProgressCounter progress;
-    for (int k : keyOfItem) {
+    for (size_t item = 0; item < itemCount; ++item) {
+        const int k = keyOf(item);
         if (k >= 0) ++offset[size_t(k) + 1];
         progress.Count();
     }
     std::partial_sum(offset.begin(), offset.end(), offset.begin());
     list.resize(size_t(offset.back()));
     std::vector<int> fill(offset.begin(), offset.end() - 1);
-    for (size_t item = 0; item < keyOfItem.size(); ++item) {
-        if (keyOfItem[item] >= 0) list[fill[keyOfItem[item]]++] = int(item);
+    for (size_t item = 0; item < itemCount; ++item) {
+        const int k = keyOf(item);
+        if (k >= 0) list[fill[k]++] = int(item);
         progress.Count();
     }
+}
+
+/// BuildOffsets with the items' keys in an array.
+inline void BuildOffsets(const std::vector<int> &keyOfItem, int keyCount, std::vector<int> &offset,
+                         std::vector<int> &list)
+{
+    BuildOffsets(keyOfItem.size(), [&keyOfItem](size_t item) { return keyOfItem[item]; }, keyCount, offset, list);
 }
 
 /// Pairs up the edges of the faces: fills `neighbors` and counts border, non-manifold and

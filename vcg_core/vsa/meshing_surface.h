@@ -181,7 +181,34 @@ inline int SplitVerticesPerFan(IndexedMesh &m, std::vector<int> &sourceVertex)
     return int(m.positions.size()) - inputVerticesUsed;
 }
 
-/// Grows disc cells over one connected set of faces of a region and assigns them cell ids.
+/// Scratch of the disc growths. A growth reads and writes only the faces of its own region
+/// (DiscGrower::Mine guards every other read), so the growths of different regions share the
+/// per-face arrays from different threads; vertices are shared by regions, so each thread has
+/// its own per-vertex marks.
+struct DiscScratch
+{
+    explicit DiscScratch(size_t faceCount)
+        : hop(faceCount, -1), queued(faceCount, 0), seen(faceCount, 0), slot(faceCount, 0), inSlot(MaxThreads())
+    {
+    }
+    std::vector<int> hop;      ///< per face: breadth-first distance, -1 where not reached
+    std::vector<char> queued;  ///< per face: allowed in the current growth
+    std::vector<char> seen;    ///< per face: already in a component
+    std::vector<char> slot;    ///< per face with faceCell == kGrowing: the disc it grows in
+    /// per thread, per vertex: bit b set when on the disc growing in slot b
+    std::vector<std::vector<unsigned char>> inSlot;
+
+    /// The calling thread's inSlot, made on first use.
+    std::vector<unsigned char> &VertexMarks(int vertexCount)
+    {
+        std::vector<unsigned char> &marks = inSlot[ThreadIndex()];
+        if (marks.empty()) marks.assign(size_t(vertexCount), 0);
+        return marks;
+    }
+};
+
+/// Grows disc cells over the connected sets of faces of one region, numbering them in the
+/// order they are made: faceCell holds that number until CutFreeFaces numbers the cells.
 ///
 /// A face joins a growing disc only if the disc stays a disc: it shares one edge with it and
 /// its third vertex is new to the disc, or it shares two edges (closing a notch). Growing one
@@ -191,18 +218,19 @@ inline int SplitVerticesPerFan(IndexedMesh &m, std::vector<int> &sourceVertex)
 class DiscGrower
 {
 public:
-    explicit DiscGrower(MeshingSurface &s)
-        : s_(s), inSlot_(s.positions.size(), 0), hop_(s.faces.size(), -1), queued_(s.faces.size(), 0),
-          slotOfFace_(s.faces.size(), -1)
+    DiscGrower(MeshingSurface &s, DiscScratch &scratch, int region)
+        : s_(s), x_(scratch), inSlot_(scratch.VertexMarks(s.VertexCount())), region_(region)
     {
     }
 
-    /// Cuts `component` (faces of one region, connected through edges, none in a cell yet).
-    void Decompose(const std::vector<int> &component, int region)
+    /// Cuts `component` (faces of the region and one piece, connected through edges, none in a
+    /// cell yet) into discs.
+    void Decompose(const std::vector<int> &component)
     {
+        piece_ = s_.PieceOf(component.front());
         const std::vector<int> added = GrowSeveral({component.front()}, component).front();
         if (added.size() == component.size()) {
-            Commit(added, region);
+            Commit(added);
             return;
         }
         Undo(added);
@@ -214,41 +242,46 @@ public:
             const int second = FarthestFace(piece, first);
             std::vector<int> seeds = {first};
             if (second != first) seeds.push_back(second);
-            for (const std::vector<int> &disc : GrowSeveral(seeds, piece)) Commit(disc, region);
+            for (const std::vector<int> &disc : GrowSeveral(seeds, piece)) Commit(disc);
             for (std::vector<int> &rest : UnassignedComponents(piece)) pending.push_back(std::move(rest));
         }
     }
 
-    /// Makes `disc` (faces of `region` that form a disc, none in a cell yet) the next cell.
-    void Commit(const std::vector<int> &disc, int region)
+    /// Makes `disc` (faces of the region that form a disc, none in a cell yet) the next disc.
+    void Commit(const std::vector<int> &disc)
     {
-        const int cell = s_.CellCount();
-        for (int f : disc) s_.faceCell[f] = cell;
-        s_.cellRegion.push_back(region);
+        for (int f : disc) s_.faceCell[f] = discCount_;
+        ++discCount_;
     }
 
-private:
-    MeshingSurface &s_;
-    std::vector<unsigned char> inSlot_;  ///< per vertex: bit b set when in the disc growing in slot b
-    std::vector<int> hop_;               ///< scratch for breadth-first distances
-    std::vector<char> queued_;           ///< scratch: face allowed in the current growth
-    std::vector<int> slotOfFace_;        ///< per face with faceCell == kGrowing: its slot
+    int DiscCount() const { return discCount_; }
 
+private:
     static constexpr int kFree = -1;     ///< faceCell of a face in no cell yet
     static constexpr int kGrowing = -2;  ///< faceCell of a face in a disc being grown
 
-    bool Allowed(int f) const { return f >= 0 && queued_[f] && s_.faceCell[f] == kFree; }
+    MeshingSurface &s_;
+    DiscScratch &x_;
+    std::vector<unsigned char> &inSlot_;  ///< the calling thread's (DiscScratch::inSlot)
+    const int region_;
+    int piece_ = 0;  ///< the piece of the component being cut
+    int discCount_ = 0;
+
+    /// Whether f is a face of the component being cut: only those are read or written.
+    bool Mine(int f) const { return f >= 0 && s_.faceRegion[f] == region_ && s_.PieceOf(f) == piece_; }
+
+    bool Allowed(int f) const { return Mine(f) && x_.queued[f] && s_.faceCell[f] == kFree; }
+
+    bool Growing(int f, int slot) const { return Mine(f) && s_.faceCell[f] == kGrowing && x_.slot[f] == slot; }
 
     bool CanJoin(int f, int slot) const
     {
         int sharedEdges = 0, lastShared = -1;
-        for (int i = 0; i < 3; ++i) {
-            const int g = s_.neighbors[f][i];
-            if (g >= 0 && s_.faceCell[g] == kGrowing && slotOfFace_[g] == slot) {
+        for (int i = 0; i < 3; ++i)
+            if (Growing(s_.neighbors[f][i], slot)) {
                 ++sharedEdges;
                 lastShared = i;
             }
-        }
         if (sharedEdges == 2) return true;
         if (sharedEdges != 1) return false;  // 3 would close a sphere; 0 is not adjacent
         const int apex = s_.faces[f][(lastShared + 2) % 3];
@@ -258,7 +291,7 @@ private:
     void Join(int f, int slot, std::vector<int> &disc)
     {
         s_.faceCell[f] = kGrowing;
-        slotOfFace_[f] = slot;
+        x_.slot[f] = char(slot);
         for (int v : s_.faces[f]) inSlot_[v] |= (1u << slot);
         disc.push_back(f);
     }
@@ -266,7 +299,7 @@ private:
     /// Grows one disc per seed (at most two), taking turns one face at a time, breadth first.
     std::vector<std::vector<int>> GrowSeveral(const std::vector<int> &seeds, const std::vector<int> &piece)
     {
-        for (int f : piece) queued_[f] = 1;
+        for (int f : piece) x_.queued[f] = 1;
         std::vector<std::vector<int>> discs(seeds.size());
         std::vector<std::deque<int>> fronts(seeds.size());
         for (size_t slot = 0; slot < seeds.size(); ++slot) {
@@ -287,7 +320,7 @@ private:
                 }
             }
         }
-        for (int f : piece) queued_[f] = 0;
+        for (int f : piece) x_.queued[f] = 0;
         for (const std::vector<int> &disc : discs)
             for (int f : disc)
                 for (int v : s_.faces[f]) inSlot_[v] = 0;
@@ -308,81 +341,131 @@ private:
     /// The face of `piece` farthest from `start` in edge hops (first one found on ties).
     int FarthestFace(const std::vector<int> &piece, int start)
     {
-        for (int f : piece) queued_[f] = 1;
+        for (int f : piece) x_.queued[f] = 1;
         std::vector<int> order = {start};
-        hop_[start] = 0;
+        x_.hop[start] = 0;
         for (size_t head = 0; head < order.size(); ++head)
             for (int g : s_.neighbors[order[head]])
-                if (g >= 0 && queued_[g] && hop_[g] < 0 && s_.faceCell[g] == kFree) {
-                    hop_[g] = hop_[order[head]] + 1;
+                if (Allowed(g) && x_.hop[g] < 0) {
+                    x_.hop[g] = x_.hop[order[head]] + 1;
                     order.push_back(g);
                 }
         const int farthest = order.back();
-        for (int f : order) hop_[f] = -1;
-        for (int f : piece) queued_[f] = 0;
+        for (int f : order) x_.hop[f] = -1;
+        for (int f : piece) x_.queued[f] = 0;
         return farthest;
     }
 
     std::vector<std::vector<int>> UnassignedComponents(const std::vector<int> &piece)
     {
         std::vector<std::vector<int>> components;
-        for (int f : piece) queued_[f] = 1;
+        for (int f : piece) x_.queued[f] = 1;
         for (int start : piece) {
-            if (!queued_[start] || s_.faceCell[start] != kFree) continue;
+            if (!Allowed(start)) continue;
             std::vector<int> component = {start};
-            queued_[start] = 0;
+            x_.queued[start] = 0;
             for (size_t head = 0; head < component.size(); ++head)
                 for (int g : s_.neighbors[component[head]])
-                    if (g >= 0 && queued_[g] && s_.faceCell[g] == kFree) {
-                        queued_[g] = 0;
+                    if (Allowed(g)) {
+                        x_.queued[g] = 0;
                         component.push_back(g);
                     }
             std::sort(component.begin(), component.end());
             components.push_back(std::move(component));
         }
-        for (int f : piece) queued_[f] = 0;
+        for (int f : piece) x_.queued[f] = 0;
         return components;
     }
 };
 
-/// Cuts the components of the faces in no cell (faceCell -1) into disc cells numbered from
-/// CellCount() on, in order of their lowest face. A component that
-/// was cell `before` of `previousCell` (per face, or empty) and `previousOffset` whole is a
-/// disc, and stays one cell without being grown again.
-inline void CutFreeFaces(MeshingSurface &s, const std::vector<int> &previousCell,
-                         const std::vector<int> &previousOffset)
+/// A component cut by CutRegion: its lowest face and the discs it was cut into.
+struct CutComponent
 {
-    const int faceCount = s.FaceCount();
-    // Each per-face array is fresh memory, hundreds of megabytes at millions of faces: the
-    // ticks keep the progress bar moving between them.
-    ProgressTick(faceCount);
-    DiscGrower grower(s);
-    std::vector<char> seen(faceCount, 0);
-    ProgressTick(faceCount);
-    ProgressCounter progress;
-    for (int start = 0; start < faceCount; ++start) {
-        if (seen[start] || s.faceCell[start] != -1) continue;
-        const int region = s.faceRegion[start], piece = s.PieceOf(start);
+    int lowestFace;
+    int discs;
+};
+
+/// Cuts the free faces of `region` (`first` to `last`, ascending) into discs, component by
+/// component in order of their lowest face (see CutFreeFaces); faceCell gets each face's disc,
+/// numbered within the region.
+inline std::vector<CutComponent> CutRegion(MeshingSurface &s, DiscScratch &scratch, int region, const int *first,
+                                           const int *last, const std::vector<int> &previousCell,
+                                           const std::vector<int> &previousOffset)
+{
+    DiscGrower grower(s, scratch, region);
+    std::vector<CutComponent> cut;
+    for (; first != last; ++first) {
+        const int start = *first;
+        if (scratch.seen[start]) continue;
+        const int piece = s.PieceOf(start);
         const int before = previousCell.empty() ? -1 : previousCell[start];
         std::vector<int> component = {start};
-        seen[start] = 1;
+        scratch.seen[start] = 1;
         bool inOneCell = before >= 0;
         for (size_t head = 0; head < component.size(); ++head)
             for (int g : s.neighbors[component[head]])
-                if (g >= 0 && !seen[g] && s.faceRegion[g] == region && s.PieceOf(g) == piece) {
-                    seen[g] = 1;
+                if (g >= 0 && s.faceRegion[g] == region && s.PieceOf(g) == piece && !scratch.seen[g]) {
+                    scratch.seen[g] = 1;
                     component.push_back(g);
                     inOneCell = inOneCell && previousCell[g] == before;
                 }
-        progress.Count(int(component.size()));
+        const int discsBefore = grower.DiscCount();
         if (inOneCell && int(component.size()) == previousOffset[before + 1] - previousOffset[before]) {
-            grower.Commit(component, region);
+            grower.Commit(component);
         } else {
             std::sort(component.begin(), component.end());
-            grower.Decompose(component, region);
+            grower.Decompose(component);
         }
-        s.cellComponentFace.resize(s.CellCount(), start);
+        cut.push_back({start, grower.DiscCount() - discsBefore});
     }
+    return cut;
+}
+
+/// Cuts the components of the faces in no cell (faceCell -1) into disc cells numbered from
+/// CellCount() on, in order of their lowest face. The free faces of region r are
+/// freeFaces[freeOffset[r] .. r+1), ascending. A component that was cell `before` of
+/// `previousCell` (per face, or empty) and `previousOffset` whole is a disc, and stays one cell
+/// without being grown again. Regions are cut on every core, each on its own (CutRegion); the
+/// cells are numbered after, so the numbers do not depend on the threads.
+inline void CutFreeFaces(MeshingSurface &s, const std::vector<int> &freeOffset, const std::vector<int> &freeFaces,
+                         const std::vector<int> &previousCell, const std::vector<int> &previousOffset)
+{
+    const int faceCount = s.FaceCount(), regionCount = int(freeOffset.size()) - 1;
+    // Each per-face array is fresh memory, hundreds of megabytes at millions of faces: the
+    // ticks keep the progress bar moving between them.
+    ProgressTick(faceCount);
+    DiscScratch scratch(faceCount);
+    ProgressTick(faceCount);
+    std::vector<std::vector<CutComponent>> cut(regionCount);
+    const auto facesOf = [&freeOffset](int r) { return freeOffset[r + 1] - freeOffset[r]; };
+    ForEachGroup(regionCount, freeFaces.size(), facesOf, [&](int r) {
+        const int *faces = freeFaces.data();
+        cut[r] = CutRegion(s, scratch, r, faces + freeOffset[r], faces + freeOffset[r + 1], previousCell,
+                           previousOffset);
+    });
+
+    // Each region's discs become cells in order of their components' lowest faces.
+    std::vector<std::pair<int, int>> order;  // (lowest face, region)
+    for (int r = 0; r < regionCount; ++r)
+        for (const CutComponent &c : cut[r]) order.emplace_back(c.lowestFace, r);
+    std::sort(order.begin(), order.end());
+    std::vector<std::vector<int>> cellOfDisc(regionCount);
+    std::vector<size_t> nextComponent(regionCount, 0);
+    for (const auto &entry : order) {
+        const int r = entry.second;
+        const CutComponent &c = cut[r][nextComponent[r]++];
+        for (int d = 0; d < c.discs; ++d) {
+            cellOfDisc[r].push_back(s.CellCount());
+            s.cellRegion.push_back(r);
+            s.cellComponentFace.push_back(c.lowestFace);
+        }
+    }
+    ForEachGroup(regionCount, freeFaces.size(), facesOf, [&](int r) {
+        for (int k = freeOffset[r]; k < freeOffset[r + 1]; ++k) {
+            int &cell = s.faceCell[freeFaces[k]];
+            cell = cellOfDisc[r][cell];
+        }
+    });
 }
 
 /// Cuts every region into disc cells: components of a region's piece (faces of one region and
@@ -398,7 +481,9 @@ inline void BuildCells(MeshingSurface &s)
     s.faceCell.assign(faceCount, -1);
     s.cellRegion.clear();
     s.cellComponentFace.clear();
-    CutFreeFaces(s, previousCell, previousOffset);
+    std::vector<int> regionOffset, regionFaces;
+    BuildOffsets(s.faceRegion, s.regionCount, regionOffset, regionFaces);
+    CutFreeFaces(s, regionOffset, regionFaces, previousCell, previousOffset);
     BuildOffsets(s.faceCell, s.CellCount(), s.cellFaceOffset, s.cellFaces);
 }
 
@@ -467,7 +552,9 @@ inline void MarkBoundaryVertices(MeshingSurface &s)
         for (int i = 0; i < 3; ++i)
             if (s.neighbors[f][i] < 0) s.onBorder[s.faces[f][i]] = s.onBorder[s.faces[f][(i + 1) % 3]] = 1;
     s.junction.resize(s.VertexCount());
-    for (int v = 0; v < s.VertexCount(); ++v, progress.Count()) s.junction[v] = IsJunction(s, v);
+    ForEachChunk(size_t(s.VertexCount()), [&s](int, size_t begin, size_t end) {
+        for (size_t v = begin; v < end; ++v) s.junction[v] = IsJunction(s, int(v));
+    });
 }
 
 inline bool IsCellBoundary(const MeshingSurface &s, int f, int i)
@@ -584,15 +671,14 @@ inline std::vector<int> RenumberCells(MeshingSurface &s, const std::vector<char>
     return newIndex;
 }
 
-/// Recomputes the junctions at the vertices of the faces of `changed` regions, each once: the
-/// only vertices whose boundary edges a relabelling can change.
-inline void UpdateJunctions(MeshingSurface &s, const std::vector<char> &changed)
+/// Recomputes the junctions at the vertices of `faces` (ascending), each once: given the faces
+/// of the regions a relabelling changed, the only vertices whose boundary edges can change.
+inline void UpdateJunctions(MeshingSurface &s, const std::vector<int> &faces)
 {
     std::vector<char> tested(s.VertexCount(), 0);
-    for (int f = 0; f < s.FaceCount(); ++f)
-        if (changed[s.faceRegion[f]])
-            for (int v : s.faces[f])
-                if (!tested[v]) tested[v] = 1, s.junction[v] = IsJunction(s, v);
+    for (int f : faces)
+        for (int v : s.faces[f])
+            if (!tested[v]) tested[v] = 1, s.junction[v] = IsJunction(s, v);
 }
 
 /// BuildCellsAndLoops for a surface whose cells were built before (one piece per region) and
@@ -605,16 +691,22 @@ inline bool RebuildChangedCells(MeshingSurface &s, const std::vector<int> &previ
 {
     const int faceCount = s.FaceCount(), previousCells = s.CellCount();
     std::vector<char> changed(std::max(previousRegionCount, s.regionCount), 0);
-    for (int f = 0; f < faceCount; ++f)
-        if (previousRegion[f] != s.faceRegion[f]) changed[previousRegion[f]] = changed[s.faceRegion[f]] = 1;
+    for (int f : ItemsWhere(faceCount, [&](size_t f) { return previousRegion[f] != s.faceRegion[f]; }))
+        changed[previousRegion[f]] = changed[s.faceRegion[f]] = 1;
     // A face is in a changed region before iff after: it either kept its region or changed it.
-    for (int f = 0; f < faceCount; ++f)
-        if (changed[s.faceRegion[f]]) s.faceCell[f] = -1;
-    CutFreeFaces(s, {}, {});
+    const std::vector<int> freeFaces = ItemsWhere(faceCount, [&](size_t f) { return changed[s.faceRegion[f]] != 0; });
+    for (int f : freeFaces) s.faceCell[f] = -1;
+    std::vector<int> freeOffset, byRegion;
+    BuildOffsets(
+        freeFaces.size(), [&](size_t k) { return s.faceRegion[freeFaces[k]]; }, s.regionCount, freeOffset, byRegion);
+    for (int &k : byRegion) k = freeFaces[k];
+    CutFreeFaces(s, freeOffset, byRegion, {}, {});
     std::vector<char> live(s.CellCount(), 1);
     for (int c = 0; c < previousCells; ++c) live[c] = !changed[s.cellRegion[c]];
     const std::vector<int> newIndex = RenumberCells(s, live);
-    for (int &c : s.faceCell) c = newIndex[c];
+    ForEachChunk(s.faceCell.size(), [&](int, size_t begin, size_t end) {
+        for (size_t f = begin; f < end; ++f) s.faceCell[f] = newIndex[s.faceCell[f]];
+    });
     BuildOffsets(s.faceCell, s.CellCount(), s.cellFaceOffset, s.cellFaces);
 
     const std::vector<Point3d> areaVector = std::move(s.cellAreaVector), centroid = std::move(s.cellCentroid);
@@ -649,7 +741,7 @@ inline bool RebuildChangedCells(MeshingSurface &s, const std::vector<int> &previ
     for (int c = previousCells; c < int(newIndex.size()); ++c) fresh.push_back(newIndex[c]);
     const auto facesOf = [&s, &fresh](int k) { return s.CellFaceCount(fresh[k]); };
     ForEachGroup(int(fresh.size()), CellFaceTotal(s, fresh), facesOf, [&](int k) { MeasureCell(s, fresh[k]); });
-    UpdateJunctions(s, changed);
+    UpdateJunctions(s, freeFaces);
     traced.insert(traced.end(), fresh.begin(), fresh.end());
     std::sort(traced.begin(), traced.end());
     return TraceCellLoops(s, traced, error);
@@ -769,8 +861,9 @@ inline bool AssignRegions(MeshingSurface &s, const std::vector<int> &faceRegion,
     if (relabel) previousRegion.swap(s.faceRegion);
     s.regionCount = regionCount;
     ResizeReporting(s.faceRegion, size_t(s.FaceCount()));  // fresh memory each trial
-    ProgressCounter progress;
-    for (int f = 0; f < s.FaceCount(); ++f, progress.Count()) s.faceRegion[f] = faceRegion[s.sourceFace[f]];
+    ForEachChunk(size_t(s.FaceCount()), [&](int, size_t begin, size_t end) {
+        for (size_t f = begin; f < end; ++f) s.faceRegion[f] = faceRegion[s.sourceFace[f]];
+    });
     std::vector<int>().swap(s.facePiece);  // one piece per region, and no memory for it
     const bool built = relabel ? detail::RebuildChangedCells(s, previousRegion, previousRegionCount, error)
                                : detail::BuildCellsAndLoops(s, error);

@@ -119,6 +119,21 @@ void ForEachGroup(int groupCount, size_t itemCount, ItemsOf &&itemsOf, Body &&bo
     }
 }
 
+/// The items of [0, itemCount) for which pred(item) holds, ascending, found on every core
+/// (ForEachChunk) and joined in chunk order.
+template <class Pred>
+std::vector<int> ItemsWhere(size_t itemCount, Pred &&pred)
+{
+    std::vector<std::vector<int>> found(ChunkCount(itemCount));
+    ForEachChunk(itemCount, [&](int chunk, size_t begin, size_t end) {
+        for (size_t item = begin; item < end; ++item)
+            if (pred(item)) found[chunk].push_back(int(item));
+    });
+    std::vector<int> items;
+    for (const std::vector<int> &chunkItems : found) items.insert(items.end(), chunkItems.begin(), chunkItems.end());
+    return items;
+}
+
 /// Per-key sums over items, to the same bits on any number of threads: each chunk sums its own
 /// items by key in item order, then the chunks' partial sums are added to `sums` in chunk
 /// order. `sums[k]` comes in as the empty sum of key k, the start of every partial sum too.
