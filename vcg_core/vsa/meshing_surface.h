@@ -267,7 +267,8 @@ private:
     int piece_ = 0;  ///< the piece of the component being cut
     int discCount_ = 0;
 
-    /// Whether f is a face of the component being cut: only those are read or written.
+    /// Whether f is a face of the region and piece being cut. The growth reads and writes no
+    /// other face's state: other regions' faces may be growing on other threads.
     bool Mine(int f) const { return f >= 0 && s_.faceRegion[f] == region_ && s_.PieceOf(f) == piece_; }
 
     bool Allowed(int f) const { return Mine(f) && x_.queued[f] && s_.faceCell[f] == kFree; }
