@@ -9,6 +9,9 @@
 #include <algorithm>
 #include <cstddef>
 #include <cstdint>
+#include <memory>
+#include <new>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -50,6 +53,31 @@ inline size_t &ParallelMinWave()
     return minWave;
 }
 }  // namespace detail
+
+/// std::allocator, but for default-initialising what resize() adds: trivial items are left
+/// as they are, so that a parallel pass writes (and first touches) them, not one thread zeroing.
+template <class T>
+struct DefaultInitAllocator : std::allocator<T>
+{
+    template <class U>
+    struct rebind
+    {
+        using other = DefaultInitAllocator<U>;
+    };
+    DefaultInitAllocator() = default;
+    template <class U>
+    DefaultInitAllocator(const DefaultInitAllocator<U> &) noexcept {}
+    template <class U>
+    void construct(U *p) noexcept(std::is_nothrow_default_constructible<U>::value)
+    {
+        ::new (static_cast<void *>(p)) U;
+    }
+    template <class U, class... Args>
+    void construct(U *p, Args &&...args)
+    {
+        ::new (static_cast<void *>(p)) U(std::forward<Args>(args)...);
+    }
+};
 
 /// Threads a parallel pass may use (OMP_NUM_THREADS or omp_set_num_threads; 1 without OpenMP).
 inline int MaxThreads()

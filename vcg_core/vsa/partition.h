@@ -252,7 +252,7 @@ struct PartitionWorkspace
 
         int Region() const { return label; }
     };
-    std::vector<Node> nodes;
+    std::vector<Node, DefaultInitAllocator<Node>> nodes;
     FloodRanks ranks;
     std::vector<FloodBlock> blocks;
     std::vector<int> activeBlocks;  ///< those flooding until the next exchange
@@ -323,7 +323,7 @@ void PrepareNodes(const Graph &mesh, const Metric &metric, PartitionWorkspace<Me
 {
     if (int(ws.nodes.size()) == mesh.FaceCount()) return;
     ws.nodes.clear();
-    ResizeReporting(ws.nodes, size_t(mesh.FaceCount()));
+    ws.nodes.resize(size_t(mesh.FaceCount()));  // left unset: the threads' pass below writes it
     ForEachChunk(size_t(mesh.FaceCount()), [&](int, size_t begin, size_t end) {
         for (size_t f = begin; f < end; ++f) {
             ws.nodes[f].label = 0;
