@@ -323,7 +323,9 @@ void PrepareNodes(const Graph &mesh, const Metric &metric, PartitionWorkspace<Me
 {
     if (int(ws.nodes.size()) == mesh.FaceCount()) return;
     ws.nodes.clear();
-    ws.nodes.resize(size_t(mesh.FaceCount()));  // left unset: the threads' pass below writes it
+    // Left unset: the threads' pass below writes label, neighbors and data (their first touch),
+    // and MarkNode writes queued before anything reads it.
+    ws.nodes.resize(size_t(mesh.FaceCount()));
     ForEachChunk(size_t(mesh.FaceCount()), [&](int, size_t begin, size_t end) {
         for (size_t f = begin; f < end; ++f) {
             ws.nodes[f].label = 0;
