@@ -8,7 +8,8 @@ export with `-m mp` writes each vertex's flags where the vertex index belongs (v
 wrap/io_trimesh/export_off.h, fixed in later releases), and meshlabserver cannot ask for
 polygonal OBJ. This script joins the triangles across faux edges, walks each polygon's outline
 and writes the polygons, on the vertices they use, as OFF, each from a corner whose fan covers
-it where there is one (MeshLab reads a polygon as the fan of its first corner). It stops with an
+it where there is one, for readers that triangulate a polygon as the fan of its first corner; it
+warns that MeshLab 2025.07 misreads polygons of 5 corners or more in OFF. It stops with an
 error if a polygon is not a disc with one outline, or if the PLY has no face flags.
 
     python3 scripts/polygons_from_ply.py APPROXIMATION.ply POLYGONS.off
@@ -144,8 +145,8 @@ def dot(u, v):
 
 def fan_ready(loop, positions):
     """`loop` started at a corner whose fan triangulates it without folding (every fan triangle
-    turns like the polygon's Newell normal), and whether there is one: MeshLab's OFF and OBJ
-    importers triangulate each polygon as a fan from its first corner."""
+    turns like the polygon's Newell normal), and whether there is one: for readers that
+    triangulate each polygon as a fan from its first corner."""
     points = [positions[v] for v in loop]
     normal = [0.0, 0.0, 0.0]
     for i, p in enumerate(points):
@@ -188,8 +189,11 @@ def main():
           f"{max(len(p) for p in polygons)} sides) on {len(used)} vertices, from {len(triangles)} triangles")
     folding = sum(not fine for _, fine in ready)
     if folding:
-        print(f"  {folding} polygons are not fans of any corner: MeshLab's importers, which triangulate each "
-              "polygon as a fan, fold them")
+        print(f"  {folding} polygons are not fans of any corner: readers that triangulate each polygon as a "
+              "fan fold them")
+    if any(len(p) >= 5 for p in polygons):
+        print("  MeshLab 2025.07 and pymeshlab 2025.7 misread polygons of 5 corners or more in OFF "
+              "(MeshLab issue #1664): open the PLY there")
     return 0
 
 

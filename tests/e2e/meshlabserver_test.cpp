@@ -245,6 +245,112 @@ TEST(MeshLabServer, HausdorffScriptMeasuresBothWays)
     }
 }
 
+namespace {
+
+/// The Newell normal of `polygon` (corners indexing `positions`): twice its area times its normal.
+vcg::Point3d PolygonNormal(const std::vector<vcg::Point3d> &positions, const std::vector<int> &polygon)
+{
+    vcg::Point3d n(0, 0, 0);
+    for (size_t c = 0; c < polygon.size(); ++c)
+        n += positions[polygon[c]] ^ positions[polygon[(c + 1) % polygon.size()]];
+    return n;
+}
+
+/// Whether triangle (a, b, c) of `positions` turns against `normal`.
+bool TurnsAgainst(const std::vector<vcg::Point3d> &positions, int a, int b, int c, const vcg::Point3d &normal)
+{
+    return ((positions[b] - positions[a]) ^ (positions[c] - positions[a])) * normal < 0;
+}
+
+/// Whether the fan of `polygon` from its corner `apex` turns a triangle against the polygon.
+bool FanFolds(const std::vector<vcg::Point3d> &positions, const std::vector<int> &polygon, int apex)
+{
+    const vcg::Point3d normal = PolygonNormal(positions, polygon);
+    const int n = int(polygon.size());
+    for (int k = 1; k + 1 < n; ++k)
+        if (TurnsAgainst(positions, polygon[apex], polygon[(apex + k) % n], polygon[(apex + k + 1) % n], normal))
+            return true;
+    return false;
+}
+
+/// Checks that meshlabserver reads the polygons back whole, each as its own triangles, and not
+/// as fans of their first corners: each polygon that is the fan of one corner but not of
+/// another is written starting at the latter, where a fan reader turns a triangle over. None of
+/// those may come back as that fan, and fewer triangles than those polygons may be turned: a
+/// fan reader turns at least one in each, while MeshLab's own triangulation can still turn one
+/// in a bent polygon (README, "Saving the polygons").
+void ExpectReadBackWhole(const fs::path &dir, const std::vector<vcg::Point3d> &positions,
+                         std::vector<std::vector<int>> polygons)
+{
+    std::vector<char> checked(polygons.size(), 0);
+    size_t triangleCount = 0;
+    for (size_t p = 0; p < polygons.size(); ++p) {
+        std::vector<int> &polygon = polygons[p];
+        const int n = int(polygon.size());
+        triangleCount += size_t(n - 2);
+        int folding = -1, flat = -1;
+        for (int apex = 0; apex < n; ++apex) (FanFolds(positions, polygon, apex) ? folding : flat) = apex;
+        if (folding < 0 || flat < 0) continue;
+        std::rotate(polygon.begin(), polygon.begin() + folding, polygon.end());
+        checked[p] = 1;
+    }
+    const int startsFolding = int(std::count(checked.begin(), checked.end(), 1));
+    ASSERT_GT(startsFolding, 0) << "every polygon is a fan of each corner: nothing to check";
+    const fs::path folding = dir / "folding_fans.off", back = dir / "read_back.ply";
+    {
+        std::ofstream out(folding);
+        out.precision(17);
+        out << "OFF\n" << positions.size() << " " << polygons.size() << " 0\n";
+        for (const vcg::Point3d &p : positions) out << p[0] << " " << p[1] << " " << p[2] << "\n";
+        for (const std::vector<int> &polygon : polygons) {
+            out << polygon.size();
+            for (int v : polygon) out << " " << v;
+            out << "\n";
+        }
+    }
+    const ServerRun run = RunServer(dir, "-i " + Quote(folding.string()) + " -o " + Quote(back.string()));
+    ASSERT_EQ(run.exitCode, 0) << run.output;
+    TMesh triangles;
+    ASSERT_TRUE(Load(triangles, back));
+    ASSERT_EQ(size_t(triangles.VN()), positions.size());
+    ASSERT_EQ(size_t(triangles.FN()), triangleCount);
+    std::vector<std::vector<int>> polygonsOf(positions.size());
+    for (int p = 0; p < int(polygons.size()); ++p)
+        for (int v : polygons[p]) polygonsOf[v].push_back(p);
+    int outside = 0, turned = 0;
+    std::vector<std::set<std::set<int>>> trianglesOf(polygons.size());
+    for (const auto &f : triangles.face) {
+        int corner[3];
+        for (int i = 0; i < 3; ++i) corner[i] = int(vcg::tri::Index(triangles, f.cV(i)));
+        int owner = -1;  // the polygon holding all three corners
+        for (int p : polygonsOf[corner[0]]) {
+            const auto &polygon = polygons[p];
+            const auto holds = [&](int v) { return std::count(polygon.begin(), polygon.end(), v) > 0; };
+            if (holds(corner[1]) && holds(corner[2])) owner = p;
+        }
+        if (owner < 0) {
+            ++outside;
+        } else if (checked[owner]) {
+            const vcg::Point3d normal = PolygonNormal(positions, polygons[owner]);
+            turned += TurnsAgainst(positions, corner[0], corner[1], corner[2], normal);
+            trianglesOf[owner].insert({corner[0], corner[1], corner[2]});
+        }
+    }
+    EXPECT_EQ(outside, 0) << "triangles across polygons";
+    int readAsFans = 0;
+    for (size_t p = 0; p < polygons.size(); ++p) {
+        if (!checked[p]) continue;
+        std::set<std::set<int>> fan;
+        const std::vector<int> &polygon = polygons[p];
+        for (size_t k = 1; k + 1 < polygon.size(); ++k) fan.insert({polygon[0], polygon[k], polygon[k + 1]});
+        readAsFans += trianglesOf[p] == fan;
+    }
+    EXPECT_EQ(readAsFans, 0) << "of " << startsFolding << " polygons read as fans of a corner whose fan folds";
+    EXPECT_LT(turned, startsFolding) << "triangles turned over in the polygons that start at a corner whose fan folds";
+}
+
+}  // namespace
+
 TEST(MeshLabServer, PolygonalOutputKeepsRegionsAsPolygons)
 {
     // meshlabserver 2020.09 cannot save the polygons itself (its polygonal OFF writes vertex
@@ -279,17 +385,16 @@ TEST(MeshLabServer, PolygonalOutputKeepsRegionsAsPolygons)
     int vertices = 0, polygons = 0, edgesUnused = 0;
     in >> header >> vertices >> polygons >> edgesUnused;
     ASSERT_EQ(header, "OFF");
-    for (int v = 0; v < vertices; ++v) {
-        double x, y, z;
-        in >> x >> y >> z;
-    }
+    std::vector<vcg::Point3d> positions(vertices);
+    for (vcg::Point3d &p : positions) in >> p[0] >> p[1] >> p[2];
     int largerThanTriangles = 0;
     std::set<std::pair<int, int>> halfEdges;
     std::vector<char> used(vertices, 0);
+    std::vector<std::vector<int>> polygonList;
     for (int p = 0; p < polygons; ++p) {
         int corners = 0;
         in >> corners;
-        std::vector<int> polygon(corners);
+        std::vector<int> &polygon = polygonList.emplace_back(corners);
         for (int &index : polygon) in >> index;
         ASSERT_TRUE(in) << "truncated OFF";
         largerThanTriangles += corners > 3;
@@ -308,6 +413,8 @@ TEST(MeshLabServer, PolygonalOutputKeepsRegionsAsPolygons)
     EXPECT_GE(polygons, 30);
     EXPECT_LE(polygons, 2 * 30);
     EXPECT_GE(largerThanTriangles, 15);
+    EXPECT_NE(ReadFile(dir / "convert.out").find("misread polygons of 5 corners or more"), std::string::npos);
+    ExpectReadBackWhole(dir, positions, polygonList);
 }
 
 TEST(MeshLabServer, OpenMeshKeepsItsBorder)
