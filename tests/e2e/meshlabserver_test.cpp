@@ -262,10 +262,11 @@ bool TurnsAgainst(const std::vector<vcg::Point3d> &positions, int a, int b, int 
     return ((positions[b] - positions[a]) ^ (positions[c] - positions[a])) * normal < 0;
 }
 
-/// Whether the fan of `polygon` from its corner `apex` turns a triangle against the polygon.
-bool FanFolds(const std::vector<vcg::Point3d> &positions, const std::vector<int> &polygon, int apex)
+/// Whether the fan of `polygon` from its corner `apex` turns a triangle against `normal`, the
+/// polygon's.
+bool FanFolds(const std::vector<vcg::Point3d> &positions, const std::vector<int> &polygon, const vcg::Point3d &normal,
+              int apex)
 {
-    const vcg::Point3d normal = PolygonNormal(positions, polygon);
     const int n = int(polygon.size());
     for (int k = 1; k + 1 < n; ++k)
         if (TurnsAgainst(positions, polygon[apex], polygon[(apex + k) % n], polygon[(apex + k + 1) % n], normal))
@@ -283,13 +284,15 @@ void ExpectReadBackWhole(const fs::path &dir, const std::vector<vcg::Point3d> &p
                          std::vector<std::vector<int>> polygons)
 {
     std::vector<char> checked(polygons.size(), 0);
+    std::vector<vcg::Point3d> normals;
     size_t triangleCount = 0;
     for (size_t p = 0; p < polygons.size(); ++p) {
         std::vector<int> &polygon = polygons[p];
         const int n = int(polygon.size());
         triangleCount += size_t(n - 2);
+        normals.push_back(PolygonNormal(positions, polygon));
         int folding = -1, flat = -1;
-        for (int apex = 0; apex < n; ++apex) (FanFolds(positions, polygon, apex) ? folding : flat) = apex;
+        for (int apex = 0; apex < n; ++apex) (FanFolds(positions, polygon, normals[p], apex) ? folding : flat) = apex;
         if (folding < 0 || flat < 0) continue;
         std::rotate(polygon.begin(), polygon.begin() + folding, polygon.end());
         checked[p] = 1;
@@ -331,8 +334,7 @@ void ExpectReadBackWhole(const fs::path &dir, const std::vector<vcg::Point3d> &p
         if (owner < 0) {
             ++outside;
         } else if (checked[owner]) {
-            const vcg::Point3d normal = PolygonNormal(positions, polygons[owner]);
-            turned += TurnsAgainst(positions, corner[0], corner[1], corner[2], normal);
+            turned += TurnsAgainst(positions, corner[0], corner[1], corner[2], normals[owner]);
             trianglesOf[owner].insert({corner[0], corner[1], corner[2]});
         }
     }
