@@ -9,6 +9,8 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
+#include <cmath>
 #include <limits>
 #include <memory>
 #include <optional>
@@ -302,18 +304,49 @@ TEST(MeshablePartition, TriangleSoupIsRefusedWithTheWeldHint)
     EXPECT_EQ(out.FN(), 0);
 }
 
-/// SurfaceGrid::NearestFace against brute force: the nearest face, the lowest index among
-/// equally near ones, with or without a hint. Points around a torus, and on its vertices and
-/// edges, where faces tie.
+namespace {
+
+/// Checks SurfaceGrid::NearestFace on `faces` against brute force: the nearest face, the lowest
+/// index among equally near ones, with or without a hint. Returns how many points had ties.
+int ExpectNearestFaceMatchesBruteForce(const std::vector<vcg::Point3d> &positions,
+                                       const std::vector<std::array<int, 3>> &faces,
+                                       const std::vector<vcg::Point3d> &points, std::mt19937 &random)
+{
+    const SurfaceGrid grid(positions, faces);
+    std::uniform_int_distribution<int> anyFace(0, int(faces.size()) - 1);
+    int ties = 0;
+    for (size_t q = 0; q < points.size(); ++q) {
+        const vcg::Point3d &p = points[q];
+        auto distance = [&](int f) {
+            const auto &t = faces[f];
+            double d;
+            vcg::Point3d closest;
+            vcg::TrianglePointDistance(vcg::Triangle3<double>(positions[t[0]], positions[t[1]], positions[t[2]]), p,
+                                       d, closest);
+            return d;
+        };
+        int expected = 0, equallyNear = 0;
+        for (int f = 1; f < int(faces.size()); ++f)
+            if (distance(f) < distance(expected)) expected = f;
+        for (int f = 0; f < int(faces.size()); ++f) equallyNear += distance(f) == distance(expected);
+        ties += equallyNear > 1;
+        EXPECT_EQ(grid.NearestFace(p), expected) << "point " << q;
+        for (int hint : {expected, anyFace(random), (expected + 1) % int(faces.size())})
+            EXPECT_EQ(grid.NearestFace(p, hint), expected) << "point " << q << ", hint " << hint;
+    }
+    return ties;
+}
+
+}  // namespace
+
+/// Points around a torus, and on its vertices and edges, where faces tie.
 TEST(MeshablePartition, NearestFaceMatchesBruteForce)
 {
     TMesh torus;
     vsa_test::MakeTorus(torus, 2, 0.5f, 24, 12);
     const IndexedMesh im = BuildIndexedMesh(torus);
-    const SurfaceGrid grid(im.positions, im.faces);
     std::mt19937 random(3);
     std::uniform_real_distribution<double> coordinate(-3.5, 3.5);
-    std::uniform_int_distribution<int> anyFace(0, im.FaceCount() - 1);
     std::vector<vcg::Point3d> points;
     for (int q = 0; q < 500; ++q) points.emplace_back(coordinate(random), coordinate(random), coordinate(random) / 3);
     for (int f = 0; f < im.FaceCount(); f += 7) {
@@ -321,27 +354,32 @@ TEST(MeshablePartition, NearestFaceMatchesBruteForce)
         points.push_back(im.positions[t[0]]);
         points.push_back((im.positions[t[0]] + im.positions[t[1]]) / 2);
     }
-    int ties = 0;
-    for (size_t q = 0; q < points.size(); ++q) {
-        const vcg::Point3d &p = points[q];
-        auto distance = [&](int f) {
-            const auto &t = im.faces[f];
-            double d;
-            vcg::Point3d closest;
-            vcg::TrianglePointDistance(
-                vcg::Triangle3<double>(im.positions[t[0]], im.positions[t[1]], im.positions[t[2]]), p, d, closest);
-            return d;
-        };
-        int expected = 0, equallyNear = 0;
-        for (int f = 1; f < im.FaceCount(); ++f)
-            if (distance(f) < distance(expected)) expected = f;
-        for (int f = 0; f < im.FaceCount(); ++f) equallyNear += distance(f) == distance(expected);
-        ties += equallyNear > 1;
-        EXPECT_EQ(grid.NearestFace(p), expected) << "point " << q;
-        for (int hint : {expected, anyFace(random), im.neighbors[expected][0], im.neighbors[expected][2]})
-            EXPECT_EQ(grid.NearestFace(p, hint), expected) << "point " << q << ", hint " << hint;
+    EXPECT_GT(ExpectNearestFaceMatchesBruteForce(im.positions, im.faces, points, random), 50);  // vertices, edges
+}
+
+/// A flat polygon fanned into long slivers, as CAD exports have them, with points in its plane
+/// (inside, outside, on its vertices and edges) and just off it: the samples of a flat wall lie
+/// in the boxes of many slivers, which the search must tell apart exactly as brute force does.
+TEST(MeshablePartition, NearestFaceMatchesBruteForceOnFlatSlivers)
+{
+    std::vector<vcg::Point3d> positions;
+    std::vector<std::array<int, 3>> faces;
+    const int sides = 40;
+    for (int i = 0; i < sides; ++i) {
+        const double angle = 2 * M_PI * i / sides;
+        positions.emplace_back(3 * std::cos(angle), std::sin(angle), 0);
     }
-    EXPECT_GT(ties, 50);  // the vertices and edges give them
+    for (int i = 1; i + 1 < sides; ++i) faces.push_back({0, i, i + 1});
+    std::mt19937 random(5);
+    std::uniform_real_distribution<double> coordinate(-3.5, 3.5), height(-1e-3, 1e-3);
+    std::vector<vcg::Point3d> points;
+    for (int q = 0; q < 400; ++q) points.emplace_back(coordinate(random), coordinate(random) / 3, 0);
+    for (int q = 0; q < 200; ++q) points.emplace_back(coordinate(random), coordinate(random) / 3, height(random));
+    for (int i = 0; i < sides; ++i) {
+        points.push_back(positions[i]);
+        points.push_back((positions[0] + positions[i]) / 2);  // on a sliver's long edge
+    }
+    EXPECT_GT(ExpectNearestFaceMatchesBruteForce(positions, faces, points, random), 40);
 }
 
 /// Two distinct vertices at one position, joined by an edge with two faces without area on it

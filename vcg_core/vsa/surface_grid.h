@@ -161,7 +161,8 @@ public:
 
     /// The face nearest to p (as a filled triangle; ties: the lowest index), or -1 for an empty
     /// grid. Shells of cells around p's own are visited until none can hold a nearer face;
-    /// cells, rows and faces farther than the nearest so far are skipped by their boxes.
+    /// cells, rows and faces farther than the nearest so far are skipped by their boxes, and
+    /// faces then by SquaredDistanceBound, before their exact distance.
     /// `hint`: a face near p (the answer for a point close by), or -1. Its distance bounds the
     /// search from the start; the answer is the same with or without it.
     int NearestFace(const Point3d &p, int hint = -1) const
@@ -188,7 +189,8 @@ public:
         const auto visit = [&](int x, int y, int z) {
             const auto [first, last] = FacesIn(CellIndex(x, y, z));
             for (const int *face = first; face != last; ++face) {
-                if (!within(BoxSquaredDistance(FaceBox(*face), p))) continue;  // the cheap test
+                if (!within(BoxSquaredDistance(FaceBox(*face), p))) continue;  // the cheap tests
+                if (!within(SquaredDistanceBound(*face, p))) continue;
                 const double distance = DistanceTo(*face, p);
                 if (distance < best || (distance == best && (nearest < 0 || *face < nearest)))
                     best = distance, nearest = *face;
@@ -223,6 +225,31 @@ private:
         TrianglePointDistance(Triangle3<double>(positions_[t[0]], positions_[t[1]], positions_[t[2]]), p, distance,
                               closest);
         return distance;
+    }
+    /// A lower bound on the squared distance from p to face f: to its plane, or to the half-space
+    /// of its plane's normal and an edge that p lies beyond. On a flat part the samples lie in the
+    /// plane of many slivers whose boxes hold them; this tells most of those apart without the
+    /// exact distance. The bound is lowered by kBoxSlack of the rounding's scale: a sliver's
+    /// normal, and so its plane, is only as exact as its edges' lengths against its area allow.
+    double SquaredDistanceBound(int face, const Point3d &p) const
+    {
+        const std::array<int, 3> &t = faces_[face];
+        const Point3d &a = positions_[t[0]];
+        const Point3d e1 = positions_[t[1]] - a, e2 = positions_[t[2]] - a, n = e1 ^ e2, toP = p - a;
+        const double squaredNorm = n.SquaredNorm();
+        if (!(squaredNorm > 0)) return 0;  // no plane: no bound
+        const double normLength = std::sqrt(squaredNorm);
+        double lower = std::abs(n * toP) / normLength;
+        for (int i = 0; i < 3; ++i) {
+            const Point3d &from = positions_[t[i]];
+            const Point3d outward = (positions_[t[(i + 1) % 3]] - from) ^ n;  // in the plane, away from the face
+            const double beyond = outward * (p - from);
+            if (beyond > 0) lower = std::max(lower, beyond / outward.Norm());
+        }
+        const double scale = std::sqrt(e1.SquaredNorm() * e2.SquaredNorm()) / normLength *
+                             (toP.Norm() + std::sqrt(std::max(e1.SquaredNorm(), e2.SquaredNorm())));
+        lower -= detail::kBoxSlack * scale;
+        return lower > 0 ? lower * lower : 0;
     }
     static double BoxSquaredDistance(const Box3d &box, const Point3d &p)
     {

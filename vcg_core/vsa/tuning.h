@@ -45,7 +45,7 @@ constexpr double kFacingAwayShare = 0.01;  ///< a region faces away past this sh
 constexpr double kStrayAllowance = 2e-3;   ///< of the diagonal: projected anchors move even nearly flat regions' triangles
 
 // Grids (surface_grid.h).
-constexpr double kBoxSlack = 1e-9;  ///< the nearest-face search skips boxes this much beyond its best distance: far above rounding
+constexpr double kBoxSlack = 1e-9;  ///< the nearest-face search skips boxes and distance bounds this much beyond its best distance: far above rounding
 
 // The final meshing's progress (meshing.h, meshing_repair.h), in progress items, as kTrialItems.
 constexpr double kMeshingSetupItems = 33; ///< per input face (measured at 3.3M): the surface, its regions and cells, the chord bound, the gap test's grid
