@@ -307,9 +307,11 @@ TEST(MeshablePartition, TriangleSoupIsRefusedWithTheWeldHint)
 namespace {
 
 /// Checks SurfaceGrid::NearestFace on `faces` against brute force: the nearest face, the lowest
-/// index among equally near ones, with or without a hint. Returns how many points had ties.
+/// index among equally near ones, with or without a hint (the answer, any face, or the answer's
+/// neighbours across its edges 0 and 2, -1 on a border). Returns how many points had ties.
 int ExpectNearestFaceMatchesBruteForce(const std::vector<vcg::Point3d> &positions,
                                        const std::vector<std::array<int, 3>> &faces,
+                                       const std::vector<std::array<int, 3>> &neighbors,
                                        const std::vector<vcg::Point3d> &points, std::mt19937 &random)
 {
     const SurfaceGrid grid(positions, faces);
@@ -331,7 +333,7 @@ int ExpectNearestFaceMatchesBruteForce(const std::vector<vcg::Point3d> &position
         for (int f = 0; f < int(faces.size()); ++f) equallyNear += distance(f) == distance(expected);
         ties += equallyNear > 1;
         EXPECT_EQ(grid.NearestFace(p), expected) << "point " << q;
-        for (int hint : {expected, anyFace(random), (expected + 1) % int(faces.size())})
+        for (int hint : {expected, anyFace(random), neighbors[expected][0], neighbors[expected][2]})
             EXPECT_EQ(grid.NearestFace(p, hint), expected) << "point " << q << ", hint " << hint;
     }
     return ties;
@@ -354,7 +356,8 @@ TEST(MeshablePartition, NearestFaceMatchesBruteForce)
         points.push_back(im.positions[t[0]]);
         points.push_back((im.positions[t[0]] + im.positions[t[1]]) / 2);
     }
-    EXPECT_GT(ExpectNearestFaceMatchesBruteForce(im.positions, im.faces, points, random), 50);  // vertices, edges
+    EXPECT_GT(ExpectNearestFaceMatchesBruteForce(im.positions, im.faces, im.neighbors, points, random),
+              50);  // vertices, edges
 }
 
 /// A flat polygon fanned into long slivers, as CAD exports have them, with points in its plane
@@ -363,13 +366,15 @@ TEST(MeshablePartition, NearestFaceMatchesBruteForce)
 TEST(MeshablePartition, NearestFaceMatchesBruteForceOnFlatSlivers)
 {
     std::vector<vcg::Point3d> positions;
-    std::vector<std::array<int, 3>> faces;
+    std::vector<std::array<int, 3>> faces, neighbors;
     const int sides = 40;
     for (int i = 0; i < sides; ++i) {
         const double angle = 2 * M_PI * i / sides;
         positions.emplace_back(3 * std::cos(angle), std::sin(angle), 0);
     }
     for (int i = 1; i + 1 < sides; ++i) faces.push_back({0, i, i + 1});
+    const int fanCount = int(faces.size());
+    for (int f = 0; f < fanCount; ++f) neighbors.push_back({f - 1, -1, f + 1 < fanCount ? f + 1 : -1});
     std::mt19937 random(5);
     std::uniform_real_distribution<double> coordinate(-3.5, 3.5), height(-1e-3, 1e-3);
     std::vector<vcg::Point3d> points;
@@ -379,7 +384,7 @@ TEST(MeshablePartition, NearestFaceMatchesBruteForceOnFlatSlivers)
         points.push_back(positions[i]);
         points.push_back((positions[0] + positions[i]) / 2);  // on a sliver's long edge
     }
-    EXPECT_GT(ExpectNearestFaceMatchesBruteForce(positions, faces, points, random), 40);
+    EXPECT_GT(ExpectNearestFaceMatchesBruteForce(positions, faces, neighbors, points, random), 40);
 }
 
 /// Two distinct vertices at one position, joined by an edge with two faces without area on it

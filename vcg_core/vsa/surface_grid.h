@@ -246,8 +246,10 @@ private:
             const double beyond = outward * (p - from);
             if (beyond > 0) lower = std::max(lower, beyond / outward.Norm());
         }
-        const double scale = std::sqrt(e1.SquaredNorm() * e2.SquaredNorm()) / normLength *
-                             (toP.Norm() + std::sqrt(std::max(e1.SquaredNorm(), e2.SquaredNorm())));
+        if (lower == 0) return 0;  // p in the face's plane and within its edges: the search's usual hit
+        const double e1Squared = e1.SquaredNorm(), e2Squared = e2.SquaredNorm();
+        const double scale = std::sqrt(e1Squared * e2Squared) / normLength *
+                             (toP.Norm() + std::sqrt(std::max(e1Squared, e2Squared)));
         lower -= detail::kBoxSlack * scale;
         return lower > 0 ? lower * lower : 0;
     }
