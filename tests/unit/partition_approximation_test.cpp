@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstring>
 #include <limits>
 #include <set>
@@ -379,9 +380,11 @@ TEST(PartitionApproximation, RegionOperations)
 
 TEST(PartitionApproximation, SplitEachIsSplitAfterSplit)
 {
-    // Several regions split at once, with one pass over the faces, end as split one at a time:
-    // regions, proxies, errors and energies to the bit (sums over a region's faces keep the
-    // chunks of a sum over every face, see SumByKeyOfListed).
+    // Several regions split at once, with one pass over the faces and on any number of threads,
+    // end as split one at a time: regions, proxies, errors and energies to the bit (sums over a
+    // region's faces keep the chunks of a sum over every face, see SumByKeyOfListed). Region 3
+    // and the regions around it: neighbours split side by side on two threads, each flood
+    // walled off from the other's faces.
     const IndexedMesh im = vsa_test::LoadCgalMesh("armadillo.off");
     auto converged = [&] {
         Approximation a(im, Params(30, MetricKind::L21, SeedingMethod::Hierarchical, 2));
@@ -389,31 +392,46 @@ TEST(PartitionApproximation, SplitEachIsSplitAfterSplit)
         a.Run(5);
         return a;
     };
-    Approximation each = converged(), oneByOne = converged();
-    const std::vector<int> regions = {3, 11, 17, 29};
+    Approximation oneByOne = converged();
+    const std::vector<int> &label = oneByOne.CurrentPartition().faceRegion;
+    std::vector<int> regions = {3};
+    for (int f = 0; f < im.FaceCount(); ++f)
+        for (int g : im.neighbors[f])
+            if (label[f] == 3 && g >= 0 && label[g] != 3 &&
+                std::find(regions.begin(), regions.end(), label[g]) == regions.end())
+                regions.push_back(label[g]);
+    ASSERT_GE(regions.size(), 3u);
     std::vector<int> faces(regions.size(), -1);  // the second region at its worst face
     for (size_t i = 0; i < regions.size(); ++i)
         if (i != 1)
             for (int f = im.FaceCount() - 1; f >= 0 && faces[i] < 0; --f)
-                if (each.CurrentPartition().faceRegion[f] == regions[i] && f != each.SeedFaces()[regions[i]])
-                    faces[i] = f;
-    each.SplitEach(regions, faces);
+                if (label[f] == regions[i] && f != oneByOne.SeedFaces()[regions[i]]) faces[i] = f;
+    const int count = 30 + int(regions.size());
     for (size_t i = 0; i < regions.size(); ++i) EXPECT_EQ(oneByOne.Split(regions[i], faces[i]), 30 + int(i));
-    const ApproximationResult a = each.Result(), b = oneByOne.Result();
-    EXPECT_EQ(a.proxyCount, 34);
-    EXPECT_TRUE(a.partition.faceRegion == b.partition.faceRegion);
-    EXPECT_EQ(std::memcmp(a.partition.proxies.data(), b.partition.proxies.data(), sizeof(Proxy) * 34), 0);
-    EXPECT_TRUE(a.regionEnergy == b.regionEnergy);
-    EXPECT_TRUE(each.FaceErrors() == oneByOne.FaceErrors());
-    EXPECT_TRUE(each.SeedFaces() == oneByOne.SeedFaces());
-    EXPECT_EQ(vsa_test::CheckPartition(im, a.partition.faceRegion, 34), "");
+    const ApproximationResult b = oneByOne.Result();
+    for (int threads : {1, 2, 3}) {
+        Approximation each = converged();
+        vsa_test::WithThreads(threads, [&] {
+            each.SplitEach(regions, faces);
+            return 0;
+        });
+        const ApproximationResult a = each.Result();
+        ASSERT_EQ(a.proxyCount, count) << threads << " threads";
+        EXPECT_TRUE(a.partition.faceRegion == b.partition.faceRegion) << threads << " threads";
+        EXPECT_EQ(std::memcmp(a.partition.proxies.data(), b.partition.proxies.data(), sizeof(Proxy) * count), 0);
+        EXPECT_TRUE(a.regionEnergy == b.regionEnergy);
+        EXPECT_TRUE(each.FaceErrors() == oneByOne.FaceErrors());
+        EXPECT_TRUE(each.SeedFaces() == oneByOne.SeedFaces());
+        EXPECT_EQ(vsa_test::CheckPartition(im, a.partition.faceRegion, count), "");
+    }
 
+    Approximation each = converged();
     // Bad arguments change nothing.
     EXPECT_THROW(each.SplitEach({1, 2}, {-1}), std::invalid_argument);
     EXPECT_THROW(each.SplitEach({1, 2, 1}, {-1, -1, -1}), std::invalid_argument);
-    EXPECT_THROW(each.SplitEach({1, 34}, {-1, -1}), std::invalid_argument);
-    EXPECT_EQ(each.ProxyCount(), 34);
-    EXPECT_TRUE(each.CurrentPartition().faceRegion == a.partition.faceRegion);
+    EXPECT_THROW(each.SplitEach({1, 30}, {-1, -1}), std::invalid_argument);
+    EXPECT_EQ(each.ProxyCount(), 30);
+    EXPECT_TRUE(each.CurrentPartition().faceRegion == converged().CurrentPartition().faceRegion);
 }
 
 TEST(PartitionApproximation, TeleportLeavesAStuckMinimum)

@@ -339,10 +339,21 @@ TEST(PartitionFlood, FloodWithinAloneLabelsAsTheFloodWithWalls)
         for (size_t i = 0; i < faces.size(); ++i) entry[faces[i]] = int(i);
         PartitionWorkspace<ListedFacesMetric<Metric>> alone;
         std::vector<int> label = s.partition.faceRegion;
-        EXPECT_EQ(FloodWithinAlone(im, ListedFacesMetric<Metric>(some, entry), s.partition.proxies,
+        EXPECT_EQ(FloodWithinAlone(im, ListedFacesMetric<Metric>(some, faces, entry), s.partition.proxies,
                                    {{3, seeds[3]}, {4, seeds[4]}}, faces, label, alone),
                   unreached);
         EXPECT_EQ(label, walls);
         EXPECT_EQ(alone.nodes.size(), faces.size());
+
+        // The same when the map also holds the entries of the other faces, in lists of their own
+        // (as when SplitEach splits neighbouring regions at once): they stay walls.
+        std::vector<int> others;
+        for (int f = 0; f < im.FaceCount(); ++f)
+            if (entry[f] < 0) entry[f] = int(others.size()), others.push_back(f);
+        label = s.partition.faceRegion;
+        EXPECT_EQ(FloodWithinAlone(im, ListedFacesMetric<Metric>(some, faces, entry), s.partition.proxies,
+                                   {{3, seeds[3]}, {4, seeds[4]}}, faces, label, alone),
+                  unreached);
+        EXPECT_EQ(label, walls);
     });
 }

@@ -209,8 +209,10 @@ void CheckListedFacesMetric(bool withSecondMoments)
     std::vector<int> entry(im.FaceCount(), -1);
     for (size_t i = 0; i < faces.size(); ++i) entry[faces[i]] = int(i);
     const Metric metric(whole);
-    const ListedFacesMetric<Metric> listed(some, entry);
-    EXPECT_EQ(listed.Listed(0), -1);
+    const ListedFacesMetric<Metric> listed(some, faces, entry);
+    EXPECT_EQ(listed.Find(0), -1);
+    entry[0] = 0;  // face 0 as the first entry of another list, which the map may hold too
+    EXPECT_EQ(listed.Find(0), -1);
     EXPECT_EQ(listed.ErrorScale(), metric.ErrorScale());
     TestRandom random(3);
     const Proxy p = RandomProxy(random);
@@ -219,6 +221,7 @@ void CheckListedFacesMetric(bool withSecondMoments)
     for (size_t i = 0; i < faces.size(); ++i) {
         const int f = faces[i];
         ASSERT_EQ(listed.Listed(f), int(i));
+        ASSERT_EQ(listed.Find(f), int(i));
         EXPECT_EQ(some.area[i], whole.area[f]);
         EXPECT_EQ(some.normal[i], whole.normal[f]);
         EXPECT_EQ(some.centroid[i], whole.centroid[f]);

@@ -536,36 +536,49 @@ private:
 
     /// SplitEach's splits, each on the geometry and the flood's nodes of its region's faces
     /// alone: Run released the whole mesh's, and the meshable split calls this beside its trials.
+    /// The regions are split on every thread, one region at a time: a split reads and writes only
+    /// its region's faces and its two proxies, so the order does not matter and the new proxies
+    /// are numbered in the order of `regions`.
     template <class Metric>
     void SplitListed(const std::vector<int> &regions, const std::vector<int> &faces,
                      const std::vector<std::vector<int>> &regionFaces)
     {
         const auto &faceRegion = state_.partition.faceRegion;
-        PartitionWorkspace<ListedFacesMetric<Metric>> regionNodes;  // see FloodWithinAlone
-        std::vector<int> listed(size_t(mesh_.FaceCount()), -1);     // per face: its entry in its region's geometry
-        for (size_t i = 0; i < regions.size(); ++i) {
+        const int first = ProxyCount(), count = int(regions.size());
+        std::vector<int> seed(faces);
+        std::vector<int> listed(size_t(mesh_.FaceCount()), -1);  // per face: its entry in its region's geometry
+        size_t listedCount = 0;
+        for (int i = 0; i < count; ++i) {
             const std::vector<int> &own = regionFaces[i];
-            int face = faces[i];
+            int &face = seed[i];
             if (face < 0 || face >= mesh_.FaceCount() || faceRegion[face] != regions[i] || state_.IsSeed(face))
                 face = WorstFace(own);
+            for (size_t k = 0; k < own.size(); ++k) listed[own[k]] = int(k);
+            listedCount += own.size();
+        }
+        state_.partition.proxies.resize(size_t(first + count));
+        state_.seeds.resize(size_t(first + count), -1);
+        state_.regionEnergy.resize(size_t(first + count), 0);
+        std::vector<PartitionWorkspace<ListedFacesMetric<Metric>>> nodes(MaxThreads());  // see FloodWithinAlone
+        const auto facesOf = [&regionFaces](int i) { return regionFaces[i].size(); };
+        ForEachGroup(count, listedCount, facesOf, [&](int i) {
+            const std::vector<int> &own = regionFaces[i];
             const FaceGeometry g =
                 ComputeFaceGeometryOf(mesh_, own, param_.metric == MetricKind::L2, maxFaceArea_, diagonal_);
-            for (size_t k = 0; k < own.size(); ++k) listed[own[k]] = int(k);
-            SplitRegion(ListedFacesMetric<Metric>(g, listed), regionNodes, regions[i], face, own);
-            for (int f : own) listed[f] = -1;
-        }
+            SplitRegion(ListedFacesMetric<Metric>(g, own, listed), nodes[ThreadIndex()], regions[i], first + i,
+                        seed[i], own);
+        });
     }
 
+    /// Splits `region` into itself and `added` (a proxy slot left for it), seeded at `seed`.
     /// `faces`: the region's, ascending, the faces `metric` has.
     template <class Metric>
     void SplitRegion(const ListedFacesMetric<Metric> &metric, PartitionWorkspace<ListedFacesMetric<Metric>> &ws,
-                     int region, int seed, const std::vector<int> &faces)
+                     int region, int added, int seed, const std::vector<int> &faces)
     {
         auto &faceRegion = state_.partition.faceRegion;
-        const int added = ProxyCount();
-        state_.partition.proxies.push_back(FitFace(metric.Inner(), metric.Geometry(), metric.Listed(seed)));
-        state_.seeds.push_back(seed);
-        state_.regionEnergy.push_back(0);
+        state_.partition.proxies[added] = FitFace(metric.Inner(), metric.Geometry(), metric.Listed(seed));
+        state_.seeds[added] = seed;
         std::vector<char> only(ProxyCount(), 0);
         only[region] = only[added] = 1;
         for (int i = 0; i < std::max(1, param_.relaxations); ++i) {

@@ -261,15 +261,22 @@ public:
     using Moments = typename Metric::Moments;
     using FaceData = typename Metric::FaceData;
 
-    /// `listed`: per face of the mesh, its entry in `geometry`, or -1 for a face that is not one
-    /// of the faces (never asked about, but for Listed); both must outlive the metric.
-    ListedFacesMetric(const FaceGeometry &geometry, const std::vector<int> &listed)
-        : metric_(geometry), geometry_(&geometry), listed_(&listed)
+    /// `faces`: the faces, entry i of `geometry` for faces[i]; `listed`: per face of the mesh,
+    /// its entry in `geometry`, or in the geometry of another list (several regions split at
+    /// once share one map), or -1. All three must outlive the metric.
+    ListedFacesMetric(const FaceGeometry &geometry, const std::vector<int> &faces, const std::vector<int> &listed)
+        : metric_(geometry), geometry_(&geometry), faces_(&faces), listed_(&listed)
     {
     }
 
-    /// Entry of face f in the geometry, or -1 when f is not one of the faces.
+    /// Entry of face f, one of the faces, in the geometry.
     int Listed(int f) const { return (*listed_)[f]; }
+    /// Entry of any face f of the mesh in the geometry, or -1 when f is not one of the faces.
+    int Find(int f) const
+    {
+        const int entry = (*listed_)[f];
+        return entry >= 0 && size_t(entry) < faces_->size() && (*faces_)[size_t(entry)] == f ? entry : -1;
+    }
     const Metric &Inner() const { return metric_; }
     const FaceGeometry &Geometry() const { return *geometry_; }
 
@@ -286,6 +293,7 @@ public:
 private:
     Metric metric_;
     const FaceGeometry *geometry_;
+    const std::vector<int> *faces_;
     const std::vector<int> *listed_;
 };
 

@@ -656,7 +656,7 @@ int FloodWithinAlone(const Graph &mesh, const ListedFacesMetric<Metric> &metric,
         detail::MarkNode(node, -1);
         for (int k = 0; k < 3; ++k) {
             const int g = mesh.neighbors[faces[i]][k];
-            node.neighbors[k] = g < 0 ? -1 : metric.Listed(g);
+            node.neighbors[k] = g < 0 ? -1 : metric.Find(g);
         }
         node.data = metric.Data(faces[i]);
         progress.Count();
@@ -727,7 +727,9 @@ void FitRegions(const Metric &metric, RegionState &s, const std::vector<char> &o
     auto &proxies = s.partition.proxies;
     std::vector<typename Metric::Moments> moments;
     moments.reserve(regionCount);
-    for (int r = 0; r < regionCount; ++r) moments.push_back(metric.EmptyMoments(proxies[r].point));
+    // Only the flagged regions' proxies are read: SplitEach fits other regions on other threads.
+    for (int r = 0; r < regionCount; ++r)
+        moments.push_back(metric.EmptyMoments(only.empty() || only[r] ? proxies[r].point : Point3d(0, 0, 0)));
     const auto &faceRegion = s.partition.faceRegion;
     SumMoments(metric, detail::FlaggedRegionOf(faceRegion, only), faceRegion.size(), moments, listed);
     for (int r = 0; r < regionCount; ++r)
