@@ -234,16 +234,16 @@ private:
     double SquaredDistanceBound(int face, const Point3d &p) const
     {
         const std::array<int, 3> &t = faces_[face];
-        const Point3d &a = positions_[t[0]];
-        const Point3d e1 = positions_[t[1]] - a, e2 = positions_[t[2]] - a, n = e1 ^ e2, toP = p - a;
+        const Point3d &a = positions_[t[0]], &b = positions_[t[1]], &c = positions_[t[2]];
+        const Point3d e1 = b - a, e2 = c - a, n = e1 ^ e2, toP = p - a;
         const double squaredNorm = n.SquaredNorm();
         if (!(squaredNorm > 0)) return 0;  // no plane: no bound
         const double normLength = std::sqrt(squaredNorm);
         double lower = std::abs(n * toP) / normLength;
+        const Point3d edge[3] = {e1, c - b, a - c}, fromCorner[3] = {toP, p - b, p - c};
         for (int i = 0; i < 3; ++i) {
-            const Point3d &from = positions_[t[i]];
-            const Point3d outward = (positions_[t[(i + 1) % 3]] - from) ^ n;  // in the plane, away from the face
-            const double beyond = outward * (p - from);
+            const Point3d outward = edge[i] ^ n;  // in the plane, away from the face
+            const double beyond = outward * fromCorner[i];
             if (beyond > 0) lower = std::max(lower, beyond / outward.Norm());
         }
         if (lower == 0) return 0;  // p in the face's plane and within its edges: the search's usual hit
