@@ -10,6 +10,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <string>
@@ -95,6 +96,37 @@ TEST(ThreadCount, EveryGroupOnceOnAnyNumberOfThreads)
             return v;
         });
         for (int g = 0; g < groups; ++g) EXPECT_EQ(visits[g], 1 + g) << "group " << g << ", " << threads << " threads";
+    }
+}
+
+TEST(ThreadCount, CompressedListsAreTheStableSortOnAnyNumberOfThreads)
+{
+    // Keys scattered over 3 chunks of items, some left out (-1), one key with no item.
+    const size_t count = 3 * kChunkItems + 77;
+    const int keys = 50;
+    std::vector<int> key(count);
+    for (size_t i = 0; i < count; ++i) {
+        const int raw = int(i * 7919 % 53) - 3;  // -3 to 49: negatives are left out
+        key[i] = raw == 17 ? 18 : raw;            // key 17 gets no item
+    }
+    std::vector<int> byKey;  // the items with a key, by key then item
+    for (size_t i = 0; i < count; ++i)
+        if (key[i] >= 0) byKey.push_back(int(i));
+    std::stable_sort(byKey.begin(), byKey.end(), [&](int a, int b) { return key[a] < key[b]; });
+    for (int threads : kThreadCounts) {
+        std::vector<int> offset, list;
+        WithThreads(threads, [&] {
+            detail::BuildOffsets(key, keys, offset, list);
+            return 0;
+        });
+        ASSERT_EQ(offset.size(), size_t(keys) + 1) << threads << " threads";
+        EXPECT_EQ(offset[0], 0) << threads << " threads";
+        EXPECT_TRUE(list == byKey) << threads << " threads";
+        for (int k = 0; k < keys; ++k) {
+            const auto items = std::count(key.begin(), key.end(), k);
+            EXPECT_EQ(offset[k + 1] - offset[k], items) << "key " << k << ", " << threads << " threads";
+        }
+        EXPECT_EQ(offset[18], offset[17]) << threads << " threads";
     }
 }
 

@@ -262,8 +262,7 @@ public:
         RequireInitialized("AddProxy");
         if (ProxyCount() >= mesh_.FaceCount())
             throw std::logic_error("Cannot add a proxy: every face already has its own.");
-        std::vector<int> regionSize(ProxyCount(), 0);
-        for (int r : state_.partition.faceRegion) ++regionSize[r];
+        const std::vector<int> regionSize = detail::RegionSizes(state_.partition);
         int worst = -1;
         for (int r = 0; r < ProxyCount(); ++r)
             if (regionSize[r] > 1 && (worst < 0 || state_.regionEnergy[r] > state_.regionEnergy[worst])) worst = r;

@@ -135,16 +135,18 @@ public:
     {
         FindInteriors();
         const MeshingSurface &before = earlier.s_;
-        for (int c = 0; c < s.CellCount(); ++c) {
+        // On every thread: a cell that was a cell there is the only one that takes its flooding.
+        const auto facesOf = [&s](int c) { return s.CellFaceCount(c); };
+        ForEachGroup(s.CellCount(), size_t(s.FaceCount()), facesOf, [&](int c) {
             const int first = s.cellFaceOffset[c], last = s.cellFaceOffset[c + 1];
             const int was = before.faceCell[s.cellFaces[first]];
             bool same = before.cellFaceOffset[was + 1] - before.cellFaceOffset[was] == last - first &&
                         before.cellLoop[was] == s.cellLoop[c];
             for (int k = first; k < last && same; ++k) same = before.faceCell[s.cellFaces[k]] == was;
-            if (!same) continue;
+            if (!same) return;
             loopColor_[c] = std::move(earlier.loopColor_[was]);
             loopDistance_[c] = std::move(earlier.loopDistance_[was]);
-        }
+        });
     }
 
     /// The surface whose cells these floodings are.

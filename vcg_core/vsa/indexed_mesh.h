@@ -123,25 +123,48 @@ inline void Unite(std::vector<int> &parent, int a, int b)
 }
 
 /// Compressed lists, a counting sort: items of key k are list[offset[k] .. offset[k+1]), in
-/// increasing order; items whose keyOf(item) is negative are left out.
+/// increasing order; items whose keyOf(item) is negative are left out. From
+/// detail::ParallelMinItems() items on, each thread counts and places a part of the items: a
+/// stable sort has one answer, so the lists are the same on any number of threads.
 template <class KeyOf>
 void BuildOffsets(size_t itemCount, KeyOf &&keyOf, int keyCount, std::vector<int> &offset, std::vector<int> &list)
 {
-    offset.assign(size_t(keyCount) + 1, 0);
-    ProgressCounter progress;
-    for (size_t item = 0; item < itemCount; ++item) {
-        const int k = keyOf(item);
-        if (k >= 0) ++offset[size_t(k) + 1];
-        progress.Count();
+    const int parts = itemCount >= detail::ParallelMinItems() ? MaxThreads() : 1;
+    const auto partBegin = [&](int p) { return itemCount * size_t(p) / size_t(parts); };
+    // Per part and key: the count of its items, then where the part's first item of the key goes.
+    std::vector<std::vector<int>> place(parts);
+    const auto eachPart = [&](auto &&body) {
+#ifdef _OPENMP
+#pragma omp parallel for schedule(static, 1) if (parts > 1)
+#endif
+        for (int p = 0; p < parts; ++p) {
+            place[p].resize(size_t(keyCount));  // zeros, written first by the part's thread
+            ProgressCounter progress;  // in parts, on the calling thread only, for every thread
+            const int team = parts == 1 ? 1 : ThreadIndex() == 0 ? TeamSize() : 0;
+            for (size_t item = partBegin(p); item < partBegin(p + 1); ++item) {
+                body(place[p], keyOf(item), item);
+                if (team) progress.Count(team);
+            }
+        }
+    };
+    eachPart([](std::vector<int> &count, int k, size_t) {
+        if (k >= 0) ++count[size_t(k)];
+    });
+    offset.resize(size_t(keyCount) + 1);
+    int placed = 0;
+    for (int k = 0; k < keyCount; ++k) {
+        offset[size_t(k)] = placed;
+        for (std::vector<int> &count : place) {
+            const int n = count[size_t(k)];
+            count[size_t(k)] = placed;
+            placed += n;
+        }
     }
-    std::partial_sum(offset.begin(), offset.end(), offset.begin());
-    list.resize(size_t(offset.back()));
-    std::vector<int> fill(offset.begin(), offset.end() - 1);
-    for (size_t item = 0; item < itemCount; ++item) {
-        const int k = keyOf(item);
-        if (k >= 0) list[fill[k]++] = int(item);
-        progress.Count();
-    }
+    offset[size_t(keyCount)] = placed;
+    list.resize(size_t(placed));
+    eachPart([&list](std::vector<int> &next, int k, size_t item) {
+        if (k >= 0) list[size_t(next[size_t(k)]++)] = int(item);
+    });
 }
 
 /// BuildOffsets with the items' keys in an array.
@@ -159,24 +182,26 @@ inline void LinkFaces(IndexedMesh &im, MeshDiagnostics &diag)
     // Half-edges bucketed by their lower vertex (BuildOffsets keeps them in faceEdge order),
     // each holding only its upper vertex: on big meshes the cost is memory traffic, not
     // comparisons.
-    std::vector<int> lowerVertex(size_t(faceCount) * 3);  // per face edge
-    ProgressCounter progress;
-    for (int f = 0; f < faceCount; ++f) {
-        for (int i = 0; i < 3; ++i) {
-            const int a = im.faces[f][i], b = im.faces[f][(i + 1) % 3];
-            lowerVertex[3 * f + i] = a == b ? -1 : std::min(a, b);  // -1: joins nothing, left out
-        }
-        progress.Count(3);
-    }
+    std::vector<int, DefaultInitAllocator<int>> lowerVertex(size_t(faceCount) * 3);  // per face edge
+    ForEachChunk(size_t(faceCount), [&](int, size_t begin, size_t end) {
+        for (size_t f = begin; f < end; ++f)
+            for (int i = 0; i < 3; ++i) {
+                const int a = im.faces[f][i], b = im.faces[f][(i + 1) % 3];
+                lowerVertex[3 * f + i] = a == b ? -1 : std::min(a, b);  // -1: joins nothing, left out
+            }
+    });
     std::vector<int> bucketOffset, faceEdges;
-    BuildOffsets(lowerVertex, im.VertexCount(), bucketOffset, faceEdges);
+    BuildOffsets(
+        lowerVertex.size(), [&lowerVertex](size_t e) { return lowerVertex[e]; }, im.VertexCount(), bucketOffset,
+        faceEdges);
     struct HalfEdge { int upperVertex, faceEdge; };
-    std::vector<HalfEdge> edges(faceEdges.size());
-    for (size_t k = 0; k < faceEdges.size(); ++k) {
-        const int e = faceEdges[k];
-        edges[k] = {std::max(im.faces[e / 3][e % 3], im.faces[e / 3][(e % 3 + 1) % 3]), e};
-        progress.Count();
-    }
+    std::vector<HalfEdge, DefaultInitAllocator<HalfEdge>> edges(faceEdges.size());
+    ForEachChunk(faceEdges.size(), [&](int, size_t begin, size_t end) {
+        for (size_t k = begin; k < end; ++k) {
+            const int e = faceEdges[k];
+            edges[k] = {std::max(im.faces[e / 3][e % 3], im.faces[e / 3][(e % 3 + 1) % 3]), e};
+        }
+    });
     // Each small bucket sorted by (upper vertex, faceEdge): then the half-edges of one edge
     // are consecutive, in faceEdge order. Buckets are independent: in parallel, each chunk of
     // vertices counting its own edges.
@@ -353,25 +378,28 @@ inline std::vector<uint32_t> FaceSpaceCodes(const IndexedMesh &im, const Box3d &
     });
 }
 
-/// The items in increasing order of `code`, ties in item order: a stable radix sort of
-/// (code, item) words, read in sequence.
+/// The items in increasing order of `code`, ties in item order: a radix sort of (code, item)
+/// words, each digit's pass a stable counting sort (BuildOffsets) on every core.
 inline std::vector<int> OrderByCode(const std::vector<uint32_t> &code)
 {
     constexpr int kDigitBits = 11;  // three digits cover the codes' 31 bits
-    std::vector<uint64_t> items(code.size()), sorted(code.size());
-    for (size_t i = 0; i < code.size(); ++i) items[i] = uint64_t(code[i]) << 32 | i;
-    std::vector<size_t> start(size_t(1) << kDigitBits);
+    std::vector<uint64_t, DefaultInitAllocator<uint64_t>> items(code.size()), sorted(code.size());
+    ForEachChunk(code.size(), [&](int, size_t begin, size_t end) {
+        for (size_t i = begin; i < end; ++i) items[i] = uint64_t(code[i]) << 32 | i;
+    });
+    std::vector<int> offset, byDigit;
     for (int shift = 32; shift < 32 + 3 * kSpaceCodeBits + 1; shift += kDigitBits) {
-        auto digit = [shift](uint64_t item) { return size_t(item >> shift) & ((size_t(1) << kDigitBits) - 1); };
-        std::fill(start.begin(), start.end(), 0);
-        for (uint64_t item : items) ++start[digit(item)];
-        size_t sum = 0;
-        for (size_t &s : start) sum += std::exchange(s, sum);
-        for (uint64_t item : items) sorted[start[digit(item)]++] = item;
+        const auto digit = [&items, shift](size_t i) { return int(items[i] >> shift & ((1u << kDigitBits) - 1)); };
+        BuildOffsets(items.size(), digit, 1 << kDigitBits, offset, byDigit);
+        ForEachChunk(items.size(), [&](int, size_t begin, size_t end) {
+            for (size_t k = begin; k < end; ++k) sorted[k] = items[size_t(byDigit[k])];
+        });
         items.swap(sorted);
     }
     std::vector<int> order(code.size());
-    for (size_t i = 0; i < items.size(); ++i) order[i] = int(uint32_t(items[i]));
+    ForEachChunk(items.size(), [&](int, size_t begin, size_t end) {
+        for (size_t i = begin; i < end; ++i) order[i] = int(uint32_t(items[i]));
+    });
     return order;
 }
 

@@ -382,8 +382,8 @@ RegionTrial TrialMeshRegions(TrialSetup<CoordType> &input, const Partition &part
 /// Regions at fault that can be split (two faces at least), worst first: by fault, then by stray.
 inline std::vector<int> RegionsToSplit(const RegionTrial &trial, const Partition &partition)
 {
-    std::vector<int> faces(trial.fault.size(), 0), regions;
-    for (int r : partition.faceRegion) ++faces[r];
+    const std::vector<int> faces = RegionSizes(partition);
+    std::vector<int> regions;
     for (int r = 0; r < int(trial.fault.size()); ++r)
         if (trial.fault[r] != RegionFault::None && faces[r] > 1) regions.push_back(r);
     std::stable_sort(regions.begin(), regions.end(), [&](int a, int b) {

@@ -234,7 +234,7 @@ public:
                     in_, *grid_, f, met, [&](int g) { return fresh[g] && g < f; },  // tested from g
                     [&](int g) { pairs[chunk].emplace_back(f, g); });
             }
-        });
+        }, kFacePairItems);
         for (const auto &chunkPairs : pairs)
             for (const auto &[f, g] : chunkPairs) intersecting_[f] = intersecting_[g] = 1;
         return CellsWithFacesFlagged(s, cells, intersecting_);

@@ -113,15 +113,16 @@ inline int TeamSize()
 inline int ChunkCount(size_t itemCount) { return int((itemCount + kChunkItems - 1) / kChunkItems); }
 
 /// Calls body(chunk, begin, end) for every chunk of [0, itemCount), spread over the threads
-/// from detail::ParallelMinItems() items on. The body must not throw: an exception cannot
-/// leave an OpenMP loop. Only the calling thread (thread 0) ticks the progress, counting each of
-/// its chunks once per thread as the others work alongside.
+/// from detail::ParallelMinItems() items on, an item counting for `itemWork` when it costs
+/// that many faces' share of a pass (a query, a test). The body must not throw: an exception
+/// cannot leave an OpenMP loop. Only the calling thread (thread 0) ticks the progress, counting
+/// each of its chunks once per thread as the others work alongside.
 template <class Body>
-void ForEachChunk(size_t itemCount, Body &&body)
+void ForEachChunk(size_t itemCount, Body &&body, size_t itemWork = 1)
 {
     const int chunks = ChunkCount(itemCount);
 #ifdef _OPENMP
-#pragma omp parallel for schedule(dynamic, 1) if (chunks > 1 && itemCount >= detail::ParallelMinItems())
+#pragma omp parallel for schedule(dynamic, 1) if (chunks > 1 && itemCount * itemWork >= detail::ParallelMinItems())
 #endif
     for (int c = 0; c < chunks; ++c) {
         const size_t begin = size_t(c) * kChunkItems, end = std::min(itemCount, begin + kChunkItems);

@@ -558,6 +558,16 @@ void Flood(const Metric &metric, const std::vector<Proxy> &proxies, const std::v
     Flooding<Metric, Neighbors>(metric, proxies, ws).Run(seeds);
 }
 
+/// Faces per region of `partition`, counted on every core.
+inline std::vector<int> RegionSizes(const Partition &partition)
+{
+    std::vector<int> size(partition.proxies.size(), 0);
+    SumByKey(
+        partition.faceRegion.size(), size, [&](size_t f) { return partition.faceRegion[f]; },
+        [](int &n, size_t) { ++n; }, [](int &n, int part) { n += part; });
+    return size;
+}
+
 /// For SumByKey over the faces: a face's region when `only` flags it (or is empty), else -1.
 inline auto FlaggedRegionOf(const std::vector<int> &faceRegion, const std::vector<char> &only)
 {

@@ -433,11 +433,9 @@ void CarryRegions(const RegionState &coarse, const std::vector<int> &groupOf, co
 {
     s.partition.proxies = coarse.partition.proxies;
     s.partition.faceRegion.resize(groupOf.size());
-    ProgressCounter carried;
-    for (size_t f = 0; f < groupOf.size(); ++f) {
-        s.partition.faceRegion[f] = coarse.partition.faceRegion[groupOf[f]];
-        carried.Count();
-    }
+    ForEachChunk(groupOf.size(), [&](int, size_t begin, size_t end) {
+        for (size_t f = begin; f < end; ++f) s.partition.faceRegion[f] = coarse.partition.faceRegion[groupOf[f]];
+    });
     s.faceError.resize(groupOf.size());
     s.seeds.assign(coarse.RegionCount(), -1);
     s.regionEnergy.assign(coarse.RegionCount(), 0);

@@ -41,6 +41,7 @@ constexpr double kTrialSetupItems = 29;  ///< progress items per face of it (mea
 constexpr double kTrialItems = 16;       ///< per face of a trial: its regions and cells, the chord bound, its pass, the stray test, choosing split faces, the split
 constexpr double kInputPairsItems = 12;  ///< per face, in the first trial only: the grid and shapes of the input's faces for their own intersections
 constexpr int kNearestFaceItems = 128;   ///< a nearest-face query of the facing-away test takes about as long as 128 faces' share of a pass
+constexpr int kFacePairItems = 16;       ///< testing an input face against the faces near it (2.3 us at 3.3M faces) takes about as long as 16 faces' share of a pass
 constexpr double kFacingAwayShare = 0.01;  ///< a region faces away past this share of its area facing the input's back
 constexpr double kStrayAllowance = 2e-3;   ///< of the diagonal: projected anchors move even nearly flat regions' triangles
 
