@@ -4,6 +4,7 @@
 #include "partition_test_helpers.h"
 
 #include <vsa/approximate_shape.h>
+#include <vsa/mesh_validity.h>
 #include <vsa/parallel.h>
 
 #include <vcg/complex/algorithms/create/platonic.h>
@@ -128,6 +129,48 @@ TEST(ThreadCount, CompressedListsAreTheStableSortOnAnyNumberOfThreads)
         }
         EXPECT_EQ(offset[18], offset[17]) << threads << " threads";
     }
+}
+
+TEST(ThreadCount, ListsOfPairsKeepTheItemsOrderOnAnyNumberOfThreads)
+{
+    // Items over 3 chunks making 0 to 3 (key, value) pairs each, as faces make one per edge
+    // between two patches; a key's values come by item, then in the order the item made them.
+    const size_t count = 3 * kChunkItems + 77;
+    const int keys = 40;
+    const auto pairsOf = [](size_t item, auto &&emit) {
+        for (int j = 0; j < int(item % 4); ++j) emit(int((item * 31 + size_t(j) * 7) % 40), int(item) * 4 + j);
+    };
+    std::vector<std::vector<int>> expected(keys);
+    for (size_t i = 0; i < count; ++i) pairsOf(i, [&](int k, int value) { expected[size_t(k)].push_back(value); });
+    for (int threads : kThreadCounts) {
+        std::vector<int> offset, list;
+        WithThreads(threads, [&] {
+            detail::BuildLists(count, pairsOf, keys, offset, list);
+            return 0;
+        });
+        ASSERT_EQ(offset.size(), size_t(keys) + 1) << threads << " threads";
+        for (int k = 0; k < keys; ++k)
+            EXPECT_TRUE(std::vector<int>(list.begin() + offset[k], list.begin() + offset[k + 1]) == expected[size_t(k)])
+                << "key " << k << ", " << threads << " threads";
+    }
+}
+
+TEST(ThreadCount, SelfIntersectionsAreTheSameOnAnyNumberOfThreads)
+{
+    // Two spheres that overlap: their faces cross along a circle, found chunk by chunk.
+    IndexedMesh im = Indexed("sphere");
+    const int faces = im.FaceCount(), vertices = int(im.positions.size());
+    for (int v = 0; v < vertices; ++v) im.positions.push_back(im.positions[size_t(v)] + vcg::Point3d(0.5, 0.3, 0.1));
+    for (int f = 0; f < faces; ++f) {
+        const std::array<int, 3> t = im.faces[size_t(f)];
+        im.faces.push_back({t[0] + vertices, t[1] + vertices, t[2] + vertices});
+    }
+    const std::vector<std::pair<int, int>> one = WithThreads(1, [&] { return detail::SelfIntersectingPairs(im); });
+    ASSERT_GT(one.size(), 100u);
+    for (const auto &[f, g] : one) EXPECT_TRUE(f < faces && g >= faces) << f << " " << g;  // each sphere is clean
+    for (int threads : kThreadCounts)
+        EXPECT_TRUE(WithThreads(threads, [&] { return detail::SelfIntersectingPairs(im); }) == one)
+            << threads << " threads";
 }
 
 TEST(ThreadCount, SumsOfListedItemsAreTheSameBitsAsSumsOverAll)

@@ -122,18 +122,19 @@ inline void Unite(std::vector<int> &parent, int a, int b)
     if (a != b) parent[std::max(a, b)] = std::min(a, b);  // smallest root: deterministic
 }
 
-/// Compressed lists, a counting sort: items of key k are list[offset[k] .. offset[k+1]), in
-/// increasing order; items whose keyOf(item) is negative are left out. From
-/// detail::ParallelMinItems() items on, each thread counts and places a part of the items: a
-/// stable sort has one answer, so the lists are the same on any number of threads.
-template <class KeyOf>
-void BuildOffsets(size_t itemCount, KeyOf &&keyOf, int keyCount, std::vector<int> &offset, std::vector<int> &list)
+/// Compressed lists, a counting sort of the (key, value) pairs the items make:
+/// pairsOf(item, emit) calls emit(key, value) for each pair of the item, and the values of key k
+/// are list[offset[k] .. offset[k+1]), by increasing item, then in the order the item emitted
+/// them. From detail::ParallelMinItems() items on, each thread counts and places a part of the
+/// items: a stable sort has one answer, so the lists are the same on any number of threads.
+template <class PairsOf>
+void BuildLists(size_t itemCount, PairsOf &&pairsOf, int keyCount, std::vector<int> &offset, std::vector<int> &list)
 {
     const int parts = itemCount >= detail::ParallelMinItems() ? MaxThreads() : 1;
     const auto partBegin = [&](int p) { return itemCount * size_t(p) / size_t(parts); };
-    // Per part and key: the count of its items, then where the part's first item of the key goes.
+    // Per part and key: the count of its pairs, then where the part's first pair of the key goes.
     std::vector<std::vector<int>> place(parts);
-    const auto eachPart = [&](auto &&body) {
+    const auto eachPart = [&](auto &&emit) {
 #ifdef _OPENMP
 #pragma omp parallel for schedule(static, 1) if (parts > 1)
 #endif
@@ -142,14 +143,12 @@ void BuildOffsets(size_t itemCount, KeyOf &&keyOf, int keyCount, std::vector<int
             ProgressCounter progress;  // in parts, on the calling thread only, for every thread
             const int team = parts == 1 ? 1 : ThreadIndex() == 0 ? TeamSize() : 0;
             for (size_t item = partBegin(p); item < partBegin(p + 1); ++item) {
-                body(place[p], keyOf(item), item);
+                pairsOf(item, [&](int key, int value) { emit(place[p], key, value); });
                 if (team) progress.Count(team);
             }
         }
     };
-    eachPart([](std::vector<int> &count, int k, size_t) {
-        if (k >= 0) ++count[size_t(k)];
-    });
+    eachPart([](std::vector<int> &count, int k, int) { ++count[size_t(k)]; });
     offset.resize(size_t(keyCount) + 1);
     int placed = 0;
     for (int k = 0; k < keyCount; ++k) {
@@ -162,9 +161,22 @@ void BuildOffsets(size_t itemCount, KeyOf &&keyOf, int keyCount, std::vector<int
     }
     offset[size_t(keyCount)] = placed;
     list.resize(size_t(placed));
-    eachPart([&list](std::vector<int> &next, int k, size_t item) {
-        if (k >= 0) list[size_t(next[size_t(k)]++)] = int(item);
-    });
+    eachPart([&list](std::vector<int> &next, int k, int value) { list[size_t(next[size_t(k)]++)] = value; });
+}
+
+/// Compressed lists of items by key, a counting sort: items of key k are
+/// list[offset[k] .. offset[k+1]), in increasing order; items whose keyOf(item) is negative are
+/// left out. The same lists on any number of threads (BuildLists).
+template <class KeyOf>
+void BuildOffsets(size_t itemCount, KeyOf &&keyOf, int keyCount, std::vector<int> &offset, std::vector<int> &list)
+{
+    BuildLists(
+        itemCount,
+        [&keyOf](size_t item, auto &&emit) {
+            const int k = keyOf(item);
+            if (k >= 0) emit(k, int(item));
+        },
+        keyCount, offset, list);
 }
 
 /// BuildOffsets with the items' keys in an array.

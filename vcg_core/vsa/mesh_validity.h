@@ -474,15 +474,23 @@ inline std::vector<std::pair<int, int>> SelfIntersectingPairs(const IndexedMesh 
     std::vector<char> outOfGrid(faceCount);
     for (int f = 0; f < faceCount; ++f) outOfGrid[f] = degenerate[f] || !isFresh(f);
     const SurfaceGrid grid(im.positions, im.faces, outOfGrid, PairGridMargin(im, clearance));
-    std::vector<int> metFrom(faceCount, -1);
+    // Chunks of faces on every thread, each thread with its own record of the faces met; a face
+    // tests all the faces near it when all are fresh, else the few fresh ones only.
+    std::vector<std::vector<int>> metFrom(MaxThreads());
+    std::vector<std::vector<std::pair<int, int>>> chunkPairs(ChunkCount(size_t(faceCount)));
+    ForEachChunk(size_t(faceCount), [&](int chunk, size_t begin, size_t end) {
+        std::vector<int> &met = metFrom[ThreadIndex()];
+        met.resize(size_t(faceCount), -1);
+        for (int f = int(begin); f < int(end); ++f) {
+            if (degenerate[f]) continue;
+            const bool freshF = isFresh(f);
+            ForEachIntersectingFace(
+                im, grid, f, met, [&](int g) { return freshF && g < f; },
+                [&](int g) { chunkPairs[chunk].emplace_back(std::min(f, g), std::max(f, g)); }, clearance);
+        }
+    }, fresh.empty() ? kFacePairItems : 1);
     std::vector<std::pair<int, int>> pairs;
-    for (int f = 0; f < faceCount; ++f) {
-        if (degenerate[f]) continue;
-        const bool freshF = isFresh(f);
-        ForEachIntersectingFace(
-            im, grid, f, metFrom, [&](int g) { return freshF && g < f; },
-            [&](int g) { pairs.emplace_back(std::min(f, g), std::max(f, g)); }, clearance);
-    }
+    for (const auto &found : chunkPairs) pairs.insert(pairs.end(), found.begin(), found.end());
     std::sort(pairs.begin(), pairs.end());
     return pairs;
 }

@@ -8,6 +8,7 @@
 #include <vsa/face_geometry.h>
 #include <vsa/indexed_mesh.h>
 #include <vsa/metrics.h>
+#include <vsa/parallel.h>
 #include <vsa/progress.h>
 #include <vsa/proxy.h>
 
@@ -83,33 +84,39 @@ PatchGraph<Metric> BuildPatchGraph(const Graph &mesh, const NodeMetric &metric, 
         progress.Count();
     }
 
-    // Every edge between two patches, bucketed by patch, then each bucket sorted and deduplicated.
-    std::vector<int> &offset = graph.neighbors.offset, &list = graph.neighbors.list;
-    offset.assign(patchCount + 1, 0);
-    const auto forEachCrossing = [&](auto visit) {
-        for (int f = 0; f < mesh.FaceCount(); ++f) {
+    // Every edge between two patches, listed by patch in face order (BuildLists), then each
+    // patch's list sorted and deduplicated, and the lists moved down over the duplicates.
+    std::vector<int> offset, list;
+    detail::BuildLists(
+        size_t(mesh.FaceCount()),
+        [&](size_t f, auto &&emit) {
             for (int g : mesh.neighbors[f])
-                if (g >= 0 && patchOf[g] != patchOf[f]) visit(patchOf[f], patchOf[g]);
-            progress.Count();
-        }
-    };
-    forEachCrossing([&](int p, int) { ++offset[p + 1]; });
-    for (int p = 0; p < patchCount; ++p) offset[p + 1] += offset[p];
-    list.resize(offset[patchCount]);
-    std::vector<int> fill(offset.begin(), offset.end() - 1);
-    forEachCrossing([&](int p, int q) { list[fill[p]++] = q; });
-    int kept = 0;  // the lists move down as duplicates go; writes never pass reads
-    for (int p = 0; p < patchCount; ++p) {
-        const int first = offset[p], last = offset[p + 1];
-        std::sort(list.begin() + first, list.begin() + last);
-        progress.Count(last - first);
-        offset[p] = kept;
-        for (int i = first; i < last; ++i)
-            if (i == first || list[i] != list[kept - 1]) list[kept++] = list[i];
-    }
-    offset[patchCount] = kept;
-    list.resize(kept);
-    list.shrink_to_fit();
+                if (g >= 0 && patchOf[g] != patchOf[f]) emit(patchOf[f], patchOf[g]);
+        },
+        patchCount, offset, list);
+    std::vector<int> &keptOffset = graph.neighbors.offset;
+    keptOffset.assign(size_t(patchCount) + 1, 0);
+    const size_t listWork = std::max<size_t>(1, list.size() / std::max<size_t>(1, size_t(patchCount)));
+    ForEachChunk(
+        size_t(patchCount),
+        [&](int, size_t begin, size_t end) {
+            for (size_t p = begin; p < end; ++p) {
+                const auto first = list.begin() + offset[p], last = list.begin() + offset[p + 1];
+                std::sort(first, last);
+                keptOffset[p + 1] = int(std::unique(first, last) - first);
+            }
+        },
+        listWork);
+    for (int p = 0; p < patchCount; ++p) keptOffset[size_t(p) + 1] += keptOffset[size_t(p)];
+    graph.neighbors.list.resize(size_t(keptOffset[size_t(patchCount)]));
+    ForEachChunk(
+        size_t(patchCount),
+        [&](int, size_t begin, size_t end) {
+            for (size_t p = begin; p < end; ++p)
+                std::copy_n(list.begin() + offset[p], keptOffset[p + 1] - keptOffset[p],
+                            graph.neighbors.list.begin() + keptOffset[p]);
+        },
+        listWork);
     return graph;
 }
 

@@ -238,20 +238,14 @@ void PickOnePerComponent(const Graph &mesh, const Metric &metric, const FaceGeom
                          SeedRandom &random)
 {
     const int faceCount = mesh.FaceCount();
-    std::vector<int> componentSize(mesh.componentCount, 0);
-    for (int c : mesh.component) ++componentSize[c];
-    std::vector<int> pick(mesh.componentCount);
-    for (int c = 0; c < mesh.componentCount; ++c) pick[c] = int(random.Below(uint64_t(componentSize[c])));
-    s.seeds.assign(mesh.componentCount, -1);
+    std::vector<int> offset, facesOf;  // the faces of each component, ascending
+    BuildOffsets(mesh.component, mesh.componentCount, offset, facesOf);
+    s.seeds.resize(mesh.componentCount);
     s.partition.proxies.resize(mesh.componentCount);
-    ProgressCounter progress;
-    for (int f = 0; f < faceCount; ++f) {
-        const int c = mesh.component[f];
-        if (pick[c]-- == 0) {
-            s.seeds[c] = f;
-            s.partition.proxies[c] = FitFace(metric, g, f);
-        }
-        progress.Count();
+    for (int c = 0; c < mesh.componentCount; ++c) {
+        const int f = facesOf[offset[c] + int(random.Below(uint64_t(offset[c + 1] - offset[c])))];
+        s.seeds[c] = f;
+        s.partition.proxies[c] = FitFace(metric, g, f);
     }
     s.partition.faceRegion = mesh.component;
     s.faceError.assign(faceCount, 0);
@@ -272,13 +266,7 @@ void StartOnePerComponent(const Graph &mesh, const Metric &metric, const FaceGeo
 template <class Metric>
 void AddRandomSeeds(const Metric &metric, const FaceGeometry &g, RegionState &s, int count, SeedRandom &random)
 {
-    std::vector<int> candidates;
-    candidates.reserve(s.faceError.size() - s.seeds.size());
-    ProgressCounter progress;
-    for (int f = 0; f < int(s.faceError.size()); ++f) {
-        if (!s.IsSeed(f)) candidates.push_back(f);
-        progress.Count();
-    }
+    std::vector<int> candidates = ItemsWhere(s.faceError.size(), [&s](size_t f) { return !s.IsSeed(int(f)); });
     count = std::min(count, int(candidates.size()));
     for (int i = 0; i < count; ++i) {  // partial Fisher-Yates: the first `count` are a uniform draw
         std::swap(candidates[i], candidates[i + random.Below(uint64_t(candidates.size() - i))]);
