@@ -222,22 +222,17 @@ private:
         explicit Edges(const MeshingSurface &s)
         {
             // Each edge once: from the higher of its two faces, or from its only one.
-            std::vector<std::array<int, 2>> edges;
-            edges.reserve(size_t(s.FaceCount()) * 3 / 2);  // a closed surface's: one realloc at most on an open one
-            ProgressCounter progress;
-            for (int f = 0; f < s.FaceCount(); ++f, progress.Count())
-                for (int i = 0; i < 3; ++i)
-                    if (s.neighbors[f][i] < f) edges.push_back({s.faces[f][i], s.faces[f][(i + 1) % 3]});
-            offset.assign(size_t(s.VertexCount()) + 1, 0);
-            for (const auto &[u, w] : edges) ++offset[u + 1], ++offset[w + 1], progress.Count();
-            std::partial_sum(offset.begin(), offset.end(), offset.begin());
-            std::vector<int> fill(offset.begin(), offset.end() - 1);
-            ResizeReporting(to, 2 * edges.size());
-            for (const auto &[u, w] : edges) {
-                progress.Count();
-                to[fill[u]++] = w;
-                to[fill[w]++] = u;
-            }
+            detail::BuildLists(
+                size_t(s.FaceCount()),
+                [&s](size_t f, auto &&emit) {
+                    for (int i = 0; i < 3; ++i)
+                        if (s.neighbors[f][i] < int(f)) {
+                            const int u = s.faces[f][i], w = s.faces[f][(i + 1) % 3];
+                            emit(u, w);
+                            emit(w, u);
+                        }
+                },
+                s.VertexCount(), offset, to);
         }
     };
 
