@@ -458,6 +458,33 @@ void ForEachIntersectingFace(const IndexedMesh &im, const SurfaceGrid &grid, int
     });
 }
 
+/// The pairs (f, g) ForEachIntersectingFace finds from each of `count` faces f = faceAt(i), i
+/// ascending, except those flagged in `degenerate`, leaving out the g that skip(f, g) holds; in
+/// that order. Chunks of the faces run on every thread, each thread with its own record of the
+/// faces met; a face's test counts as `itemWork` faces' share of a pass (ForEachChunk).
+template <class FaceAt, class Skip>
+std::vector<std::pair<int, int>> IntersectingPairsFrom(const IndexedMesh &im, const SurfaceGrid &grid,
+                                                       const std::vector<char> &degenerate, size_t count,
+                                                       FaceAt faceAt, Skip skip, size_t itemWork, double clearance = 0)
+{
+    std::vector<std::vector<int>> metFrom(MaxThreads());
+    std::vector<std::vector<std::pair<int, int>>> chunkPairs(ChunkCount(count));
+    ForEachChunk(count, [&](int chunk, size_t begin, size_t end) {
+        std::vector<int> &met = metFrom[ThreadIndex()];
+        met.resize(size_t(im.FaceCount()), -1);
+        for (size_t i = begin; i < end; ++i) {
+            const int f = faceAt(i);
+            if (degenerate[f]) continue;
+            ForEachIntersectingFace(
+                im, grid, f, met, [&](int g) { return skip(f, g); },
+                [&](int g) { chunkPairs[chunk].emplace_back(f, g); }, clearance);
+        }
+    }, itemWork);
+    std::vector<std::pair<int, int>> pairs;
+    for (const auto &found : chunkPairs) pairs.insert(pairs.end(), found.begin(), found.end());
+    return pairs;
+}
+
 /// Pairs (f < g) of faces not flagged in `degenerate` (DegenerateFaceMask) that intersect
 /// beyond their shared corners, or come within `clearance` of each other there (see
 /// FacesIntersect), sorted; only pairs with a face flagged in `fresh` when it is not empty (the
@@ -474,23 +501,12 @@ inline std::vector<std::pair<int, int>> SelfIntersectingPairs(const IndexedMesh 
     std::vector<char> outOfGrid(faceCount);
     for (int f = 0; f < faceCount; ++f) outOfGrid[f] = degenerate[f] || !isFresh(f);
     const SurfaceGrid grid(im.positions, im.faces, outOfGrid, PairGridMargin(im, clearance));
-    // Chunks of faces on every thread, each thread with its own record of the faces met; a face
-    // tests all the faces near it when all are fresh, else the few fresh ones only.
-    std::vector<std::vector<int>> metFrom(MaxThreads());
-    std::vector<std::vector<std::pair<int, int>>> chunkPairs(ChunkCount(size_t(faceCount)));
-    ForEachChunk(size_t(faceCount), [&](int chunk, size_t begin, size_t end) {
-        std::vector<int> &met = metFrom[ThreadIndex()];
-        met.resize(size_t(faceCount), -1);
-        for (int f = int(begin); f < int(end); ++f) {
-            if (degenerate[f]) continue;
-            const bool freshF = isFresh(f);
-            ForEachIntersectingFace(
-                im, grid, f, met, [&](int g) { return freshF && g < f; },
-                [&](int g) { chunkPairs[chunk].emplace_back(std::min(f, g), std::max(f, g)); }, clearance);
-        }
-    }, fresh.empty() ? kFacePairItems : 1);
-    std::vector<std::pair<int, int>> pairs;
-    for (const auto &found : chunkPairs) pairs.insert(pairs.end(), found.begin(), found.end());
+    // A face tests all the faces near it when all are fresh, else the few fresh ones only.
+    std::vector<std::pair<int, int>> pairs = IntersectingPairsFrom(
+        im, grid, degenerate, size_t(faceCount), [](size_t f) { return int(f); },
+        [&](int f, int g) { return isFresh(f) && g < f; }, fresh.empty() ? kFacePairItems : 1, clearance);
+    for (auto &[f, g] : pairs)
+        if (f > g) std::swap(f, g);
     std::sort(pairs.begin(), pairs.end());
     return pairs;
 }

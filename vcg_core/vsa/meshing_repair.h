@@ -220,23 +220,10 @@ public:
         std::sort(freshFaces.begin(), freshFaces.end());  // tested in face order, as they always were
         if (!freshFaces.empty() && !grid_)
             grid_ = std::make_unique<SurfaceGrid>(in_.positions, in_.faces, Degenerate(), PairGridMargin(in_, 0));
-        // Chunks of the fresh faces on every thread, each thread with its own record of the faces
-        // met (see ForEachIntersectingFace); each chunk lists the pairs it found.
-        std::vector<std::vector<int>> metFrom(MaxThreads());
-        std::vector<std::vector<std::pair<int, int>>> pairs(ChunkCount(freshFaces.size()));
-        ForEachChunk(freshFaces.size(), [&](int chunk, size_t begin, size_t end) {
-            std::vector<int> &met = metFrom[ThreadIndex()];
-            met.resize(in_.FaceCount(), -1);
-            for (size_t k = begin; k < end; ++k) {
-                const int f = freshFaces[k];
-                if (degenerate_[f]) continue;
-                ForEachIntersectingFace(
-                    in_, *grid_, f, met, [&](int g) { return fresh[g] && g < f; },  // tested from g
-                    [&](int g) { pairs[chunk].emplace_back(f, g); });
-            }
-        }, kFacePairItems);
-        for (const auto &chunkPairs : pairs)
-            for (const auto &[f, g] : chunkPairs) intersecting_[f] = intersecting_[g] = 1;
+        const auto pairs = IntersectingPairsFrom(
+            in_, *grid_, degenerate_, freshFaces.size(), [&](size_t k) { return freshFaces[k]; },
+            [&](int f, int g) { return fresh[g] && g < f; }, kFacePairItems);  // two fresh faces: from the lower
+        for (const auto &[f, g] : pairs) intersecting_[f] = intersecting_[g] = 1;
         return CellsWithFacesFlagged(s, cells, intersecting_);
     }
 
