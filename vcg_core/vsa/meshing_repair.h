@@ -217,8 +217,9 @@ public:
                 freshFaces.push_back(source);
             }
         });
+        if (freshFaces.empty()) return CellsWithFacesFlagged(s, cells, intersecting_);
         std::sort(freshFaces.begin(), freshFaces.end());  // tested in face order, as they always were
-        if (!freshFaces.empty() && !grid_)
+        if (!grid_)
             grid_ = std::make_unique<SurfaceGrid>(in_.positions, in_.faces, Degenerate(), PairGridMargin(in_, 0));
         const auto pairs = IntersectingPairsFrom(
             in_, *grid_, degenerate_, freshFaces.size(), [&](size_t k) { return freshFaces[k]; },
