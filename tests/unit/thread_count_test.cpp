@@ -215,10 +215,11 @@ TEST(ThreadCount, PartitionIsTheSameBitsOnAnyNumberOfThreads)
         int k;
         MetricKind metric;
         SeedingMethod init;
+        bool teleports;  ///< the case that makes sure teleports (AdjacentRegionPairs) run on threads
     };
-    for (const Case &c : {Case{"sphere", 50, MetricKind::L2, SeedingMethod::Hierarchical},
-                          Case{"fandisk.off", 40, MetricKind::L21, SeedingMethod::Farthest},
-                          Case{"armadillo.off", 100, MetricKind::L21, SeedingMethod::Random}}) {
+    for (const Case &c : {Case{"sphere", 50, MetricKind::L2, SeedingMethod::Hierarchical, false},
+                          Case{"fandisk.off", 40, MetricKind::L21, SeedingMethod::Farthest, false},
+                          Case{"armadillo.off", 100, MetricKind::L21, SeedingMethod::Random, true}}) {
         ApproximationParam param;
         param.proxyCount = c.k;
         param.metric = c.metric;
@@ -230,6 +231,11 @@ TEST(ThreadCount, PartitionIsTheSameBitsOnAnyNumberOfThreads)
         for (int threads : kThreadCounts) {
             const ApproximationResult r = WithThreads(threads, [&] { return Approximate(im, param); });
             ASSERT_TRUE(r.ok) << r.error;
+            if (c.teleports) {
+                bool teleported = false;
+                for (const std::string &message : r.messages) teleported |= message.find("teleport") != std::string::npos;
+                EXPECT_TRUE(teleported) << c.mesh << ", " << threads << " threads";
+            }
             if (reference.empty()) reference = Fingerprint(r);
             EXPECT_TRUE(Fingerprint(r) == reference) << c.mesh << ", " << threads << " threads";
         }

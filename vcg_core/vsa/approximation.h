@@ -495,6 +495,30 @@ private:
         return worst;
     }
 
+    /// The pairs (a < b) of regions that share an edge, sorted. Each chunk of faces lists its own
+    /// pairs once on every thread, so the join sorts a few pairs per chunk, not one per border edge.
+    std::vector<std::pair<int, int>> AdjacentRegionPairs() const
+    {
+        const auto &faceRegion = state_.partition.faceRegion;
+        const auto sortDistinct = [](std::vector<std::pair<int, int>> &pairs) {
+            std::sort(pairs.begin(), pairs.end());
+            pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
+        };
+        std::vector<std::vector<std::pair<int, int>>> found(ChunkCount(faceRegion.size()));
+        ForEachChunk(faceRegion.size(), [&](int chunk, size_t begin, size_t end) {
+            for (size_t f = begin; f < end; ++f)
+                for (int g : mesh_.neighbors[f])
+                    if (g > int(f) && faceRegion[g] != faceRegion[f])
+                        found[chunk].emplace_back(std::min(faceRegion[f], faceRegion[g]),
+                                                  std::max(faceRegion[f], faceRegion[g]));
+            sortDistinct(found[chunk]);
+        });
+        std::vector<std::pair<int, int>> pairs;
+        for (const auto &chunkPairs : found) pairs.insert(pairs.end(), chunkPairs.begin(), chunkPairs.end());
+        sortDistinct(pairs);
+        return pairs;
+    }
+
     bool AreAdjacent(int a, int b) const
     {
         const auto &faceRegion = state_.partition.faceRegion;
@@ -602,17 +626,9 @@ private:
         std::vector<typename Metric::Moments> moments;
         for (int r = 0; r < regionCount; ++r) moments.push_back(metric.EmptyMoments(state_.partition.proxies[r].point));
         SumMoments(metric, [&](size_t f) { return faceRegion[f]; }, faceRegion.size(), moments);
-        std::vector<std::pair<int, int>> pairs;
-        for (int f = 0; f < mesh_.FaceCount(); ++f) {
-            for (int g : mesh_.neighbors[f])
-                if (g > f && faceRegion[g] != faceRegion[f])
-                    pairs.emplace_back(std::min(faceRegion[f], faceRegion[g]), std::max(faceRegion[f], faceRegion[g]));
-        }
-        std::sort(pairs.begin(), pairs.end());
-        pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
         double bestCost = std::numeric_limits<double>::infinity();
         std::pair<int, int> best{-1, -1};
-        for (const auto &p : pairs) {
+        for (const auto &p : AdjacentRegionPairs()) {
             if (p.first == worst || p.second == worst) continue;
             typename Metric::Moments merged = moments[p.first];
             metric.Add(merged, moments[p.second]);
