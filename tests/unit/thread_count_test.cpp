@@ -173,6 +173,47 @@ TEST(ThreadCount, SelfIntersectionsAreTheSameOnAnyNumberOfThreads)
             << threads << " threads";
 }
 
+TEST(ThreadCount, ComponentsAndFansAreTheSameOnAnyNumberOfThreads)
+{
+    // Three spheres, the second touching the first at one vertex (two fans there), their faces
+    // shuffled over 15 chunks: most links cross chunks, and each sphere's first face comes late.
+    const IndexedMesh sphere = Indexed("sphere");
+    const int faces = sphere.FaceCount(), vertices = sphere.VertexCount();
+    IndexedMesh im;
+    std::vector<std::array<int, 3>> ordered;
+    for (int copy = 0; copy < 3; ++copy) {
+        for (const vcg::Point3d &p : sphere.positions) im.positions.push_back(p + vcg::Point3d(3.0 * copy, 0, 0));
+        for (std::array<int, 3> t : sphere.faces) {
+            for (int &v : t) v = copy == 1 && v == 0 ? 0 : v + copy * vertices;  // copy 1's vertex 0: copy 0's
+            ordered.push_back(t);
+        }
+    }
+    const size_t count = ordered.size();
+    for (size_t i = 0; i < count; ++i) im.faces.push_back(ordered[(i * 7919 + 45000) % count]);  // 7919 is prime
+    // What one depth-first pass in face order numbers: each component after its first face.
+    std::vector<int> copyOfFace(count), expected(count);
+    for (size_t i = 0; i < count; ++i) copyOfFace[i] = int((i * 7919 + 45000) % count) / faces;
+    std::vector<int> numberOfCopy(3, -1);
+    int numbered = 0;
+    for (size_t i = 0; i < count; ++i) {
+        int &number = numberOfCopy[size_t(copyOfFace[i])];
+        if (number < 0) number = numbered++;
+        expected[i] = number;
+    }
+    ASSERT_NE(numberOfCopy, (std::vector<int>{0, 1, 2}));  // the shuffle renumbers the spheres
+    for (int threads : kThreadCounts) {
+        IndexedMesh linked = im;
+        MeshDiagnostics diag;
+        WithThreads(threads, [&] {
+            detail::LinkAndDiagnose(linked, diag);
+            return 0;
+        });
+        EXPECT_EQ(diag.nonManifoldVertices, 1) << threads << " threads";
+        EXPECT_EQ(diag.components, 3) << threads << " threads";
+        EXPECT_TRUE(linked.component == expected) << threads << " threads";
+    }
+}
+
 TEST(ThreadCount, SumsOfListedItemsAreTheSameBitsAsSumsOverAll)
 {
     // Values of very different sizes, so that another order of the additions would round

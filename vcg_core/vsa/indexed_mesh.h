@@ -11,8 +11,10 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <cmath>
 #include <cstdint>
+#include <memory>
 #include <numeric>
 #include <optional>
 #include <sstream>
@@ -254,57 +256,87 @@ inline void LinkFaces(IndexedMesh &im, MeshDiagnostics &diag)
     }
 }
 
+/// Joins the sets of a union-find over the elements of `itemCount` items, item i owning
+/// elements [width * i, width * (i + 1)) of `parent`: linksOf(item, link) calls link(a, b) for
+/// each pair of elements to join. A chunk's links within its own elements are joined on its
+/// thread, the others after, in chunk order, on the calling thread. Each set's root is its least
+/// element (Unite), so the roots are the same on any number of threads.
+template <class LinksOf>
+void UniteLinks(size_t itemCount, int width, LinksOf &&linksOf, std::vector<int> &parent)
+{
+    std::vector<std::vector<std::pair<int, int>>> across(ChunkCount(itemCount));
+    ForEachChunk(itemCount, [&](int chunk, size_t begin, size_t end) {
+        const size_t low = begin * size_t(width), high = end * size_t(width);
+        const auto owned = [&](int e) { return size_t(e) >= low && size_t(e) < high; };
+        for (size_t item = begin; item < end; ++item)
+            linksOf(item, [&](int a, int b) {
+                if (owned(a) && owned(b)) Unite(parent, a, b);
+                else across[size_t(chunk)].emplace_back(a, b);
+            });
+    });
+    for (const auto &links : across)
+        for (const auto &[a, b] : links) Unite(parent, a, b);
+}
+
+/// The root of x's set, without shortening the path: safe while other threads read `parent`.
+inline int RootOf(const std::vector<int> &parent, int x)
+{
+    while (parent[size_t(x)] != x) x = parent[size_t(x)];
+    return x;
+}
+
 /// A vertex is manifold when the faces around it form one fan through manifold edges.
 inline int CountNonManifoldVertices(const IndexedMesh &im)
 {
     const int faceCount = im.FaceCount();
     std::vector<int> cornerParent(size_t(faceCount) * 3);
     std::iota(cornerParent.begin(), cornerParent.end(), 0);
-    ProgressCounter progress;
-    for (int f = 0; f < faceCount; ++f) {
+    UniteLinks(size_t(faceCount), 3, [&](size_t item, auto &&link) {
+        const int f = int(item);
         for (int i = 0; i < 3; ++i) {
             const int g = im.neighbors[f][i];
             if (g < f) continue;  // each manifold edge once (and skip -1)
             const int a = im.faces[f][i], b = im.faces[f][(i + 1) % 3];
             for (int j = 0; j < 3; ++j) {
-                if (im.faces[g][j] == a) Unite(cornerParent, 3 * f + i, 3 * g + j);
-                if (im.faces[g][j] == b) Unite(cornerParent, 3 * f + (i + 1) % 3, 3 * g + j);
+                if (im.faces[g][j] == a) link(3 * f + i, 3 * g + j);
+                if (im.faces[g][j] == b) link(3 * f + (i + 1) % 3, 3 * g + j);
             }
         }
-        progress.Count(3);
-    }
+    }, cornerParent);
     // Count fans per vertex: a fan is a root corner; a vertex with two roots is non-manifold.
-    std::vector<int> fans(im.positions.size(), 0);
-    for (int c = 0; c < 3 * faceCount; ++c) {
-        if (FindRoot(cornerParent, c) == c) ++fans[im.faces[c / 3][c % 3]];
-        progress.Count();
-    }
-    return int(std::count_if(fans.begin(), fans.end(), [](int n) { return n > 1; }));
+    std::unique_ptr<std::atomic<int>[]> fans(new std::atomic<int>[im.positions.size()]);
+    ForEachChunk(im.positions.size(), [&](int, size_t begin, size_t end) {
+        for (size_t v = begin; v < end; ++v) fans[v].store(0, std::memory_order_relaxed);
+    });
+    ForEachChunk(size_t(faceCount), [&](int, size_t begin, size_t end) {
+        for (size_t c = 3 * begin; c < 3 * end; ++c)
+            if (cornerParent[c] == int(c)) fans[size_t(im.faces[c / 3][c % 3])].fetch_add(1, std::memory_order_relaxed);
+    });
+    return int(ItemsWhere(im.positions.size(), [&](size_t v) { return fans[v].load(std::memory_order_relaxed) > 1; })
+                   .size());
 }
 
+/// Numbers the connected components through `neighbors` in the order of their first faces.
 inline void LabelComponents(IndexedMesh &im)
 {
-    const int faceCount = im.FaceCount();
-    im.component.assign(faceCount, -1);
-    im.componentCount = 0;
-    std::vector<int> stack;
-    ProgressCounter progress;
-    for (int start = 0; start < faceCount; ++start) {
-        if (im.component[start] >= 0) continue;
-        im.component[start] = im.componentCount;
-        stack.push_back(start);
-        while (!stack.empty()) {
-            const int f = stack.back();
-            stack.pop_back();
-            progress.Count();
-            for (int g : im.neighbors[f])
-                if (g >= 0 && im.component[g] < 0) {
-                    im.component[g] = im.componentCount;
-                    stack.push_back(g);
-                }
-        }
-        ++im.componentCount;
-    }
+    const size_t faceCount = im.faces.size();
+    std::vector<int> parent(faceCount);
+    std::iota(parent.begin(), parent.end(), 0);
+    UniteLinks(faceCount, 1, [&](size_t f, auto &&link) {
+        for (int g : im.neighbors[f])
+            if (g > int(f)) link(int(f), g);
+    }, parent);
+    // A component's root is its first face: the roots in face order number the components.
+    const std::vector<int> roots = ItemsWhere(faceCount, [&](size_t f) { return parent[f] == int(f); });
+    im.component.resize(faceCount);
+    ForEachChunk(roots.size(), [&](int, size_t begin, size_t end) {
+        for (size_t i = begin; i < end; ++i) im.component[size_t(roots[i])] = int(i);
+    });
+    ForEachChunk(faceCount, [&](int, size_t begin, size_t end) {
+        for (size_t f = begin; f < end; ++f)
+            if (parent[f] != int(f)) im.component[f] = im.component[size_t(RootOf(parent, int(f)))];
+    });
+    im.componentCount = int(roots.size());
 }
 
 /// The area under which a face of a mesh with these positions is degenerate: relative to the box
