@@ -4,6 +4,7 @@
 #ifndef VSA_PLANAR_POLYGONS_H
 #define VSA_PLANAR_POLYGONS_H
 
+#include <vsa/indexed_mesh.h>
 #include <vsa/proxy.h>
 #include <vsa/tuning.h>
 
@@ -11,6 +12,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numeric>
 #include <vector>
 
 namespace vcg {
@@ -163,25 +165,18 @@ inline std::vector<std::vector<int>> PolygonGroups(const std::vector<std::vector
                                                    const std::vector<char> &movable)
 {
     std::vector<int> parent(candidates.size());
-    for (size_t i = 0; i < parent.size(); ++i) parent[i] = int(i);
-    const auto root = [&](int i) {
-        while (parent[i] != i) i = parent[i] = parent[parent[i]];
-        return i;
-    };
+    std::iota(parent.begin(), parent.end(), 0);
     std::vector<int> firstWith(movable.size(), -1);  // per anchor: the first candidate that has it
     for (int i = 0; i < int(candidates.size()); ++i)
         for (int a : polygons[candidates[i]]) {
             if (!movable[a]) continue;
             if (firstWith[a] < 0) firstWith[a] = i;
-            else {
-                const int x = root(i), y = root(firstWith[a]);
-                parent[std::max(x, y)] = std::min(x, y);
-            }
+            else Unite(parent, i, firstWith[a]);
         }
     std::vector<std::vector<int>> groups;
     std::vector<int> groupOf(candidates.size(), -1);
     for (int i = 0; i < int(candidates.size()); ++i) {
-        const int r = root(i);
+        const int r = FindRoot(parent, i);
         if (groupOf[r] < 0) {
             groupOf[r] = int(groups.size());
             groups.emplace_back();
