@@ -189,10 +189,11 @@ TEST(ThreadCount, ComponentsAndFansAreTheSameOnAnyNumberOfThreads)
         }
     }
     const size_t count = ordered.size();
-    for (size_t i = 0; i < count; ++i) im.faces.push_back(ordered[(i * 7919 + 45000) % count]);  // 7919 is prime
+    const auto shuffled = [&](size_t i) { return (i * 7919 + 45000) % count; };  // 7919 is prime
+    for (size_t i = 0; i < count; ++i) im.faces.push_back(ordered[shuffled(i)]);
     // What one depth-first pass in face order numbers: each component after its first face.
     std::vector<int> copyOfFace(count), expected(count);
-    for (size_t i = 0; i < count; ++i) copyOfFace[i] = int((i * 7919 + 45000) % count) / faces;
+    for (size_t i = 0; i < count; ++i) copyOfFace[i] = int(shuffled(i)) / faces;
     std::vector<int> numberOfCopy(3, -1);
     int numbered = 0;
     for (size_t i = 0; i < count; ++i) {

@@ -504,7 +504,7 @@ inline std::vector<std::pair<int, int>> SelfIntersectingPairs(const IndexedMesh 
     // A face tests all the faces near it when all are fresh, else the few fresh ones only.
     std::vector<std::pair<int, int>> pairs = IntersectingPairsFrom(
         im, grid, degenerate, size_t(faceCount), [](size_t f) { return int(f); },
-        [&](int f, int g) { return isFresh(f) && g < f; }, fresh.empty() ? kFacePairItems : 1, clearance);
+        [&](int f, int g) { return g < f && isFresh(f); }, fresh.empty() ? kFacePairItems : 1, clearance);
     for (auto &[f, g] : pairs)
         if (f > g) std::swap(f, g);
     std::sort(pairs.begin(), pairs.end());
