@@ -108,6 +108,14 @@ inline bool RepeatsVertex(const std::array<int, 3> &t) { return t[0] == t[1] || 
 
 namespace detail {
 
+/// A union-find's `parent` array for `count` items, each a set of its own.
+inline std::vector<int> SingletonSets(size_t count)
+{
+    std::vector<int> parent(count);
+    std::iota(parent.begin(), parent.end(), 0);
+    return parent;
+}
+
 inline int FindRoot(std::vector<int> &parent, int x)
 {
     while (parent[x] != x) {
@@ -289,8 +297,7 @@ inline int RootOf(const std::vector<int> &parent, int x)
 inline int CountNonManifoldVertices(const IndexedMesh &im)
 {
     const int faceCount = im.FaceCount();
-    std::vector<int> cornerParent(size_t(faceCount) * 3);
-    std::iota(cornerParent.begin(), cornerParent.end(), 0);
+    std::vector<int> cornerParent = SingletonSets(size_t(faceCount) * 3);
     UniteLinks(size_t(faceCount), 3, [&](size_t item, auto &&link) {
         const int f = int(item);
         for (int i = 0; i < 3; ++i) {
@@ -320,8 +327,7 @@ inline int CountNonManifoldVertices(const IndexedMesh &im)
 inline void LabelComponents(IndexedMesh &im)
 {
     const size_t faceCount = im.faces.size();
-    std::vector<int> parent(faceCount);
-    std::iota(parent.begin(), parent.end(), 0);
+    std::vector<int> parent = SingletonSets(faceCount);
     UniteLinks(faceCount, 1, [&](size_t f, auto &&link) {
         for (int g : im.neighbors[f])
             if (g > int(f)) link(int(f), g);
@@ -554,8 +560,7 @@ IndexedMesh BuildIndexedMesh(const MeshType &m, MeshDiagnostics *diagnostics = n
 /// is none, returns an empty mesh rather than a copy of `im`, which would stall a large set-up.
 inline IndexedMesh CollapseCoincidentEdges(const IndexedMesh &im, int &collapsed, MeshDiagnostics *diagnostics = nullptr)
 {
-    std::vector<int> parent(im.VertexCount());
-    std::iota(parent.begin(), parent.end(), 0);
+    std::vector<int> parent = detail::SingletonSets(size_t(im.VertexCount()));
     collapsed = 0;
     ProgressCounter progress;
     for (const auto &t : im.faces) {

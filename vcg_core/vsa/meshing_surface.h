@@ -159,8 +159,7 @@ void NumberVerticesByFirstUse(IndexedMesh &m, size_t keyCount, KeyOf &&keyOf, st
 inline int SplitVerticesPerFan(IndexedMesh &m, std::vector<int> &sourceVertex)
 {
     const int faceCount = m.FaceCount();
-    std::vector<int> cornerParent(size_t(faceCount) * 3);
-    std::iota(cornerParent.begin(), cornerParent.end(), 0);
+    std::vector<int> cornerParent = SingletonSets(size_t(faceCount) * 3);
     for (int f = 0; f < faceCount; ++f)
         for (int i = 0; i < 3; ++i) {
             const int g = m.neighbors[f][i];

@@ -12,7 +12,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numeric>
 #include <vector>
 
 namespace vcg {
@@ -164,8 +163,7 @@ inline std::vector<std::vector<int>> PolygonGroups(const std::vector<std::vector
                                                    const std::vector<int> &candidates,
                                                    const std::vector<char> &movable)
 {
-    std::vector<int> parent(candidates.size());
-    std::iota(parent.begin(), parent.end(), 0);
+    std::vector<int> parent = SingletonSets(candidates.size());
     std::vector<int> firstWith(movable.size(), -1);  // per anchor: the first candidate that has it
     for (int i = 0; i < int(candidates.size()); ++i)
         for (int a : polygons[candidates[i]]) {
