@@ -378,6 +378,55 @@ TEST(PartitionApproximation, RegionOperations)
         }
 }
 
+/// A flat square frame (a ring: the 12 x 12 grid of [-1,1]^2 without its middle 6 x 6 quads)
+/// with one corner vertex raised, so that the frame's proxy is tilted a little off the flat
+/// faces' plane, as a ring region of a CAD part is (the gear's faces beside their bore).
+TEST(PartitionApproximation, SplitByDistanceCutsAFlatRingInHalves)
+{
+    std::vector<vcg::Point3f> coords;
+    std::vector<vcg::Point3i> tris;
+    const int n = 12;
+    auto at = [&](int i, int j) { return j * (n + 1) + i; };
+    for (int j = 0; j <= n; ++j)
+        for (int i = 0; i <= n; ++i)
+            coords.emplace_back(-1.f + 2.f * i / n, -1.f + 2.f * j / n, i == 0 && j == 0 ? 0.2f : 0.f);
+    for (int j = 0; j < n; ++j)
+        for (int i = 0; i < n; ++i)
+            if (i < 3 || i >= 9 || j < 3 || j >= 9) {
+                tris.emplace_back(at(i, j), at(i + 1, j), at(i + 1, j + 1));
+                tris.emplace_back(at(i, j), at(i + 1, j + 1), at(i, j + 1));
+            }
+    TMesh m;
+    vsa_test::BuildFromLists(m, coords, tris);
+    const IndexedMesh im = BuildIndexedMesh(m);
+    ASSERT_EQ(im.FaceCount(), 216);
+    const auto centroid = [&](int f) {
+        return (im.positions[im.faces[f][0]] + im.positions[im.faces[f][1]] + im.positions[im.faces[f][2]]) / 3.0;
+    };
+    for (SplitKind kind : {SplitKind::ByFit, SplitKind::ByDistance}) {
+        Approximation a(im, Params(1, MetricKind::L21, SeedingMethod::Hierarchical, 1));
+        a.Initialize();
+        const int seed = a.SeedFaces()[0];
+        int far = -1;  // the face farthest from the seed, across the ring
+        for (int f = 0; f < im.FaceCount(); ++f)
+            if (far < 0 || (centroid(f) - centroid(seed)).Norm() > (centroid(far) - centroid(seed)).Norm()) far = f;
+        ASSERT_EQ(a.Split(0, far, kind), 1);
+        const std::vector<int> &label = a.CurrentPartition().faceRegion;
+        EXPECT_EQ(vsa_test::CheckPartition(im, label, 2), "");
+        const int added = int(std::count(label.begin(), label.end(), 1));
+        if (kind == SplitKind::ByFit) {
+            // The new proxy, the plane of a flat face, fits every flat face exactly and wins them.
+            EXPECT_TRUE(added < 10 || added > 206) << added;
+            continue;
+        }
+        // Each face to the nearer seed: two halves of the ring, each a C of about 108 faces.
+        EXPECT_EQ(label[seed], 0);
+        EXPECT_EQ(label[far], 1);
+        EXPECT_GE(added, 90);
+        EXPECT_LE(added, 126);
+    }
+}
+
 TEST(PartitionApproximation, SplitEachIsSplitAfterSplit)
 {
     // Several regions split at once, with one pass over the faces and on any number of threads,

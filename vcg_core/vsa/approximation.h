@@ -36,6 +36,19 @@ enum class MetricKind
     L2,   ///< squared distance to the proxy plane, integrated over the face
 };
 
+/// How Approximation::Split cuts a region in two.
+enum class SplitKind
+{
+    /// The paper's: a new proxy at the face's plane, then Lloyd iterations within the region, so
+    /// that each part gets the faces its plane fits best.
+    ByFit,
+    /// Each face to the nearer, in steps across edges, of the region's seed and the face (the
+    /// seed on ties), then both parts refitted. Cuts a ring, or a region in pieces, where the
+    /// faces' planes cannot tell the parts apart: on a flat ring every face fits the plane of
+    /// either part, and a split by fit leaves one part with a face or two.
+    ByDistance,
+};
+
 struct ApproximationParam
 {
     /// k, the number of proxies (regions). Raised to the number of connected components when
@@ -289,21 +302,26 @@ public:
         return Energy() - before;
     }
 
-    /// Splits a region in two: a new proxy at `face` (by default, or when `face` is not a
-    /// non-seed face of the region, its worst face), then Param::relaxations Lloyd iterations
-    /// confined to the region's faces. Returns the new region's index (the last).
-    int Split(int region, int face = -1)
+    /// Splits a region in two at `face` (by default, or when `face` is not a non-seed face of the
+    /// region, its worst face): by fit, a new proxy there, then Param::relaxations Lloyd
+    /// iterations confined to the region's faces; or by distance (see SplitKind). Returns the
+    /// new region's index (the last).
+    int Split(int region, int face = -1, SplitKind kind = SplitKind::ByFit)
     {
-        SplitEach({region}, {face});
+        SplitEach({region}, {face}, {kind});
         return ProxyCount() - 1;
     }
 
-    /// Split for each of `regions` (distinct), at the matching one of `faces`, in this order:
-    /// the same as one Split after the other, with one pass over the mesh's faces for all.
-    void SplitEach(const std::vector<int> &regions, const std::vector<int> &faces)
+    /// Split for each of `regions` (distinct), at the matching one of `faces`, the matching one
+    /// of `kinds` (empty: all by fit), in this order: the same as one Split after the other,
+    /// with one pass over the mesh's faces for all.
+    void SplitEach(const std::vector<int> &regions, const std::vector<int> &faces,
+                   const std::vector<SplitKind> &kinds = {})
     {
         RequireInitialized("Split");
         if (faces.size() != regions.size()) throw std::invalid_argument("Split needs one face per region.");
+        if (!kinds.empty() && kinds.size() != regions.size())
+            throw std::invalid_argument("Split needs one kind per region, or none.");
         std::vector<int> slot(ProxyCount(), -1);
         for (size_t i = 0; i < regions.size(); ++i) {
             RequireRegion(regions[i]);
@@ -320,8 +338,9 @@ public:
             if (regionFaces[i].size() < 2)
                 throw std::invalid_argument("Region " + std::to_string(regions[i]) +
                                             " has a single face: cannot split it.");
-        if (param_.metric == MetricKind::L2) SplitListed<L2Metric>(regions, faces, regionFaces);
-        else SplitListed<L21Metric>(regions, faces, regionFaces);
+        const std::vector<SplitKind> kindOf = kinds.empty() ? std::vector<SplitKind>(regions.size()) : kinds;
+        if (param_.metric == MetricKind::L2) SplitListed<L2Metric>(regions, faces, kindOf, regionFaces);
+        else SplitListed<L21Metric>(regions, faces, kindOf, regionFaces);
         StartTracking(false);
     }
 
@@ -564,7 +583,7 @@ private:
     /// are numbered in the order of `regions`.
     template <class Metric>
     void SplitListed(const std::vector<int> &regions, const std::vector<int> &faces,
-                     const std::vector<std::vector<int>> &regionFaces)
+                     const std::vector<SplitKind> &kinds, const std::vector<std::vector<int>> &regionFaces)
     {
         const auto &faceRegion = state_.partition.faceRegion;
         const int first = ProxyCount(), count = int(regions.size());
@@ -589,21 +608,26 @@ private:
             const FaceGeometry g =
                 ComputeFaceGeometryOf(mesh_, own, param_.metric == MetricKind::L2, maxFaceArea_, diagonal_);
             SplitRegion(ListedFacesMetric<Metric>(g, own, listed), nodes[ThreadIndex()], regions[i], first + i,
-                        seed[i], own);
+                        seed[i], kinds[i], own);
         });
     }
 
-    /// Splits `region` into itself and `added` (a proxy slot left for it), seeded at `seed`.
-    /// `faces`: the region's, ascending, the faces `metric` has.
+    /// Splits `region` into itself and `added` (a proxy slot left for it), seeded at `seed`, as
+    /// `kind` says. `faces`: the region's, ascending, the faces `metric` has.
     template <class Metric>
     void SplitRegion(const ListedFacesMetric<Metric> &metric, PartitionWorkspace<ListedFacesMetric<Metric>> &ws,
-                     int region, int added, int seed, const std::vector<int> &faces)
+                     int region, int added, int seed, SplitKind kind, const std::vector<int> &faces)
     {
         auto &faceRegion = state_.partition.faceRegion;
         state_.partition.proxies[added] = FitFace(metric.Inner(), metric.Geometry(), metric.Listed(seed));
         state_.seeds[added] = seed;
         std::vector<char> only(ProxyCount(), 0);
         only[region] = only[added] = 1;
+        if (kind == SplitKind::ByDistance) {
+            SplitByDistance(metric, region, added, faces);
+            FitRegions(metric, state_, only, &faces);
+            return;
+        }
         for (int i = 0; i < std::max(1, param_.relaxations); ++i) {
             const std::vector<std::pair<int, int>> seeds{{region, state_.seeds[region]}, {added, state_.seeds[added]}};
             FloodWithinAlone(mesh_, metric, state_.partition.proxies, seeds, faces, faceRegion, ws);
@@ -611,6 +635,29 @@ private:
                 if (faceRegion[f] < 0) faceRegion[f] = region;
             FitRegions(metric, state_, only, &faces);
         }
+    }
+
+    /// Labels `faces` (the region's, which `metric` lists) breadth-first from the seeds of
+    /// `region` and `added`, the region's first in each step; faces neither reaches (the region
+    /// was in pieces) stay the region's.
+    template <class Metric>
+    void SplitByDistance(const ListedFacesMetric<Metric> &metric, int region, int added, const std::vector<int> &faces)
+    {
+        auto &faceRegion = state_.partition.faceRegion;
+        for (int f : faces) faceRegion[f] = -1;
+        std::vector<int> queue;
+        for (int r : {region, added}) {
+            faceRegion[state_.seeds[r]] = r;
+            queue.push_back(state_.seeds[r]);
+        }
+        for (size_t head = 0; head < queue.size(); ++head)
+            for (int g : mesh_.neighbors[queue[head]])
+                if (g >= 0 && metric.Find(g) >= 0 && faceRegion[g] < 0) {
+                    faceRegion[g] = faceRegion[queue[head]];
+                    queue.push_back(g);
+                }
+        for (int f : faces)
+            if (faceRegion[f] < 0) faceRegion[f] = region;
     }
 
     template <class Metric>

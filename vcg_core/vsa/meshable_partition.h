@@ -410,8 +410,9 @@ inline void CheckMeshablePartitionParam(const MeshablePartitionParam &param)
 
 /// Splits the regions of `approximation` that do not mesh as one clean planar polygon (see
 /// detail::TrialMeshRegions), each at its input face farthest from its triangulation, with
-/// Lloyd iterations confined to it (Approximation::Split), and tests again, until every
-/// region passes, k' reaches its cap, or the rounds run out.
+/// Lloyd iterations confined to it (Approximation::Split by fit); a region that is not a disc
+/// at its face farthest from its seed, by distance. Then tests again, until every region
+/// passes, k' reaches its cap, or the rounds run out.
 ///
 /// `start`, if given, receives the last trial's surface, labelled with the final partition,
 /// its cells' floodings and its checked pass, for BuildApproximatingMesh to start from (no
@@ -449,9 +450,15 @@ MeshablePartitionReport MakePartitionMeshable(Approximation &approximation, cons
         // Split in region order, so that the new regions' indices do not depend on the ranking's ties.
         std::vector<int> chosen(regions.begin(), regions.begin() + room);
         std::sort(chosen.begin(), chosen.end());
-        for (int r : chosen) ++report.splits[int(trial.fault[r])];
-        approximation.SplitEach(chosen, detail::ChooseSplitFaces(input, trial, chosen, approximation.SeedFaces(),
-                                                                 approximation.Mesh()));
+        std::vector<SplitKind> kinds;  // a ring needs cutting, which fits may not do
+        for (int r : chosen) {
+            ++report.splits[int(trial.fault[r])];
+            kinds.push_back(trial.fault[r] == RegionFault::NotDisc ? SplitKind::ByDistance : SplitKind::ByFit);
+        }
+        approximation.SplitEach(chosen,
+                                detail::ChooseSplitFaces(input, trial, chosen, approximation.SeedFaces(),
+                                                         approximation.Mesh()),
+                                kinds);
         if (param.lloydIterations > 0) approximation.Run(param.lloydIterations);
         ++report.rounds;
     }
