@@ -224,12 +224,12 @@ private:
             // Each edge once: from the higher of its two faces, or from its only one.
             detail::BuildLists(
                 size_t(s.FaceCount()),
-                [&s](size_t f, auto &&emit) {
+                [&s](size_t f, auto &&add) {
                     for (int i = 0; i < 3; ++i)
                         if (s.neighbors[f][i] < int(f)) {
                             const int u = s.faces[f][i], w = s.faces[f][(i + 1) % 3];
-                            emit(u, w);
-                            emit(w, u);
+                            add(u, w);
+                            add(w, u);
                         }
                 },
                 s.VertexCount(), offset, to);

@@ -133,10 +133,11 @@ inline void Unite(std::vector<int> &parent, int a, int b)
 }
 
 /// Compressed lists, a counting sort of the (key, value) pairs the items make:
-/// pairsOf(item, emit) calls emit(key, value) for each pair of the item, and the values of key k
+/// pairsOf(item, add) calls add(key, value) for each pair of the item, and the values of key k
 /// are list[offset[k] .. offset[k+1]), by increasing item, then in the order the item emitted
 /// them. From detail::ParallelMinItems() items on, each thread counts and places a part of the
 /// items: a stable sort has one answer, so the lists are the same on any number of threads.
+/// (Not `emit`: Qt, which the plugins include first, defines it as an empty macro.)
 template <class PairsOf>
 void BuildLists(size_t itemCount, PairsOf &&pairsOf, int keyCount, std::vector<int> &offset, std::vector<int> &list)
 {
@@ -144,7 +145,7 @@ void BuildLists(size_t itemCount, PairsOf &&pairsOf, int keyCount, std::vector<i
     const auto partBegin = [&](int p) { return itemCount * size_t(p) / size_t(parts); };
     // Per part and key: the count of its pairs, then where the part's first pair of the key goes.
     std::vector<std::vector<int>> place(parts);
-    const auto eachPart = [&](auto &&emit) {
+    const auto eachPart = [&](auto &&add) {
 #ifdef _OPENMP
 #pragma omp parallel for schedule(static, 1) if (parts > 1)
 #endif
@@ -153,7 +154,7 @@ void BuildLists(size_t itemCount, PairsOf &&pairsOf, int keyCount, std::vector<i
             ProgressCounter progress;  // in parts, on the calling thread only, for every thread
             const int team = parts == 1 ? 1 : ThreadIndex() == 0 ? TeamSize() : 0;
             for (size_t item = partBegin(p); item < partBegin(p + 1); ++item) {
-                pairsOf(item, [&](int key, int value) { emit(place[p], key, value); });
+                pairsOf(item, [&](int key, int value) { add(place[p], key, value); });
                 if (team) progress.Count(team);
             }
         }
@@ -182,9 +183,9 @@ void BuildOffsets(size_t itemCount, KeyOf &&keyOf, int keyCount, std::vector<int
 {
     BuildLists(
         itemCount,
-        [&keyOf](size_t item, auto &&emit) {
+        [&keyOf](size_t item, auto &&add) {
             const int k = keyOf(item);
-            if (k >= 0) emit(k, int(item));
+            if (k >= 0) add(k, int(item));
         },
         keyCount, offset, list);
 }

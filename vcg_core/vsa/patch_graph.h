@@ -89,9 +89,9 @@ PatchGraph<Metric> BuildPatchGraph(const Graph &mesh, const NodeMetric &metric, 
     std::vector<int> offset, list;
     detail::BuildLists(
         size_t(mesh.FaceCount()),
-        [&](size_t f, auto &&emit) {
+        [&](size_t f, auto &&add) {
             for (int g : mesh.neighbors[f])
-                if (g >= 0 && patchOf[g] != patchOf[f]) emit(patchOf[f], patchOf[g]);
+                if (g >= 0 && patchOf[g] != patchOf[f]) add(patchOf[f], patchOf[g]);
         },
         patchCount, offset, list);
     std::vector<int> &keptOffset = graph.neighbors.offset;
