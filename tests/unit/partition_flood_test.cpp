@@ -249,6 +249,74 @@ TEST(PartitionFlood, TiesGrowBreadthFirstOnACube)
     EXPECT_EQ(label, TextbookFlood(im, metric, proxies, seeds));
 }
 
+TEST(PartitionFlood, SameProxiesComparesBitForBit)
+{
+    const std::vector<Proxy> a = {{Point3d(0, 1, 2), Point3d(0, 0, 1)}, {Point3d(3, 4, 5), Point3d(1, 0, 0)}};
+    EXPECT_TRUE(SameProxies(a, a));
+    EXPECT_TRUE(SameProxies({}, {}));
+    std::vector<Proxy> b = a;
+    b[1].point[2] = std::nextafter(5.0, 6.0);
+    EXPECT_FALSE(SameProxies(a, b));
+    b = a;
+    b[0].point[0] = -0.0;  // equal as numbers, not as bits
+    EXPECT_FALSE(SameProxies(a, b));
+    b = a;
+    b.pop_back();
+    EXPECT_FALSE(SameProxies(a, b));
+}
+
+TEST(PartitionFlood, RelaxStopsAtAFixedPointOnlyAndEndsAsTheFullIterations)
+{
+    // Relax(n) must end exactly where n Lloyd iterations do, stopping early only when an
+    // iteration changed nothing: on fandisk the regions still move after 4 iterations; on a cube
+    // seeded on its six sides the first iteration is already a fixed point.
+    const auto expectAsFullIterations = [](const IndexedMesh &im, RegionState start, int iterations,
+                                           int expectedRun, const char *what) {
+        const FaceGeometry g = ComputeFaceGeometry(im, false);
+        const L21Metric metric(g);
+        PartitionWorkspace<L21Metric> ws;
+        RegionState relaxed = start, full = start;
+        EXPECT_EQ(detail::Relax(im, metric, relaxed, ws, iterations), expectedRun) << what;
+        for (int i = 0; i < iterations; ++i) LloydIteration(im, metric, full, ws);
+        EXPECT_EQ(relaxed.partition.faceRegion, full.partition.faceRegion) << what;
+        EXPECT_EQ(relaxed.seeds, full.seeds) << what;
+        EXPECT_TRUE(SameProxies(relaxed.partition.proxies, full.partition.proxies)) << what;
+        EXPECT_EQ(relaxed.regionEnergy, full.regionEnergy) << what;
+    };
+
+    const IndexedMesh fandisk = vsa_test::LoadCgalMesh("fandisk.off");
+    const FaceGeometry g = ComputeFaceGeometry(fandisk, false);
+    const RegionState moving = SeededState(fandisk, L21Metric(g), g, 30, 3);
+    {  // the last of the 4 iterations still changes the proxies: a stop before it would show
+        RegionState s = moving;
+        const L21Metric metric(g);
+        PartitionWorkspace<L21Metric> ws;
+        for (int i = 0; i < 3; ++i) LloydIteration(fandisk, metric, s, ws);
+        const std::vector<Proxy> third = s.partition.proxies;
+        LloydIteration(fandisk, metric, s, ws);
+        ASSERT_FALSE(SameProxies(third, s.partition.proxies));
+    }
+    expectAsFullIterations(fandisk, moving, 4, 4, "fandisk");
+
+    vsa_test::TMesh m;
+    vsa_test::MakeTessellatedCube(m, 6);
+    const IndexedMesh cube = BuildIndexedMesh(m);
+    const FaceGeometry cubeGeometry = ComputeFaceGeometry(cube, false);
+    const L21Metric cubeMetric(cubeGeometry);
+    RegionState sides;
+    std::vector<int> sideSeed(6, -1);
+    for (int f = 0; f < cube.FaceCount(); ++f)
+        if (sideSeed[vsa_test::CubeSide(cube, f)] < 0) sideSeed[vsa_test::CubeSide(cube, f)] = f;
+    for (int f : sideSeed) {
+        sides.seeds.push_back(f);
+        sides.partition.proxies.push_back(FitFace(cubeMetric, cubeGeometry, f));
+    }
+    sides.partition.faceRegion.assign(cube.FaceCount(), -1);
+    sides.faceError.assign(cube.FaceCount(), 0);
+    sides.regionEnergy.assign(6, 0);
+    expectAsFullIterations(cube, sides, 3, 2, "cube");
+}
+
 TEST(PartitionFlood, LabelledFacesAreWalls)
 {
     // Re-flood only the faces of two regions: the others keep their labels and are not crossed.

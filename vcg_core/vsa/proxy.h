@@ -6,6 +6,7 @@
 
 #include <vcg/space/point3.h>
 
+#include <cstring>
 #include <vector>
 
 namespace vcg {
@@ -18,6 +19,13 @@ struct Proxy
     Point3d point;
     Point3d normal;
 };
+
+/// Whether two lists of proxies are the same, bit for bit (a fixed point of Lloyd iterations).
+inline bool SameProxies(const std::vector<Proxy> &a, const std::vector<Proxy> &b)
+{
+    static_assert(sizeof(Proxy) == 6 * sizeof(double), "a Proxy is six doubles, without padding");
+    return a.size() == b.size() && (a.empty() || std::memcmp(a.data(), b.data(), a.size() * sizeof(Proxy)) == 0);
+}
 
 /// A partition of an IndexedMesh's faces into regions, each approximated by one proxy.
 struct Partition

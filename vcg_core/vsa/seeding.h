@@ -87,11 +87,21 @@ inline void StepCounts(ProgressStage &progress, double from, double to, int firs
                   items);
 }
 
+/// Up to `iterations` Lloyd iterations; returns how many ran. An iteration floods from the seeds
+/// with the proxies and refits both from the labels alone, so one that gives back the seeds and
+/// proxies it started from has reached a fixed point: the rest would repeat it, and are skipped.
 template <class Graph, class Metric, class Neighbors>
-void Relax(const Graph &mesh, const Metric &metric, RegionState &s, PartitionWorkspace<Metric, Neighbors> &ws,
-           int iterations)
+int Relax(const Graph &mesh, const Metric &metric, RegionState &s, PartitionWorkspace<Metric, Neighbors> &ws,
+          int iterations)
 {
-    for (int i = 0; i < iterations; ++i) LloydIteration(mesh, metric, s, ws);
+    std::vector<int> seeds;
+    std::vector<Proxy> proxies;
+    for (int i = 0; i < iterations; ++i) {
+        if (i + 1 < iterations) seeds = s.seeds, proxies = s.partition.proxies;
+        LloydIteration(mesh, metric, s, ws);
+        if (i + 1 < iterations && s.seeds == seeds && SameProxies(s.partition.proxies, proxies)) return i + 1;
+    }
+    return std::max(0, iterations);
 }
 
 /// The faces of each region, kept exact, so that choosing, refitting and re-flooding a few
