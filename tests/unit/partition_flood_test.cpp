@@ -1,5 +1,5 @@
 // The flood: its buckets hand candidates out by rank, and its labels are those of the flood that
-// queues every candidate, on any number of threads.
+// queues every candidate, on any number of threads. Relaxations stop at a fixed point only.
 #include "partition_test_helpers.h"
 
 #include <vsa/face_geometry.h>
@@ -268,8 +268,8 @@ TEST(PartitionFlood, SameProxiesComparesBitForBit)
 TEST(PartitionFlood, RelaxStopsAtAFixedPointOnlyAndEndsAsTheFullIterations)
 {
     // Relax(n) must end exactly where n Lloyd iterations do, stopping early only when an
-    // iteration changed nothing: on fandisk the regions still move after 4 iterations; on a cube
-    // seeded on its six sides the first iteration is already a fixed point.
+    // iteration changed nothing: on fandisk the 4th iteration still moves the proxies; on a cube
+    // seeded on its six sides the first iteration reaches a fixed point, which the second finds.
     const auto expectAsFullIterations = [](const IndexedMesh &im, RegionState start, int iterations,
                                            int expectedRun, const char *what) {
         const FaceGeometry g = ComputeFaceGeometry(im, false);
