@@ -15,7 +15,23 @@ cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_FLAGS_RELEAS
 cmake --build "$build" -j2 --target vsa_unit_tests vsa_bench_helper_tests vsa_fuzz_replay >> "$build/build.log" 2>&1 \
   || { tail -50 "$build/build.log"; exit 1; }
 cd "$build"
-tests/vsa_unit_tests --gtest_brief=1 "$@"
+# The unit tests in two shards at once, one per core: under the sanitizers they take minutes.
+pids=()
+for shard in 0 1; do
+  GTEST_TOTAL_SHARDS=2 GTEST_SHARD_INDEX=$shard tests/vsa_unit_tests --gtest_brief=1 "$@" \
+    > "unit_tests_shard$shard.log" 2>&1 &
+  pids+=($!)
+done
+failed=0
+for shard in 0 1; do
+  if ! wait "${pids[$shard]}"; then failed=1; fi
+  tail -n 3 "unit_tests_shard$shard.log"
+done
+if [ "$failed" -ne 0 ]; then
+  for shard in 0 1; do grep -E -A 30 'FAILED|ERROR: AddressSanitizer|runtime error' "unit_tests_shard$shard.log" || true; done
+  echo "sanitized unit tests: failed (logs: $build/unit_tests_shard0.log, unit_tests_shard1.log)" >&2
+  exit 1
+fi
 tests/vsa_bench_helper_tests --gtest_brief=1 "$@"
 tests/fuzz/vsa_fuzz_replay "$root/tests/fuzz/seeds" "$root/tests/fuzz/regressions" 2> fuzz_replay.log \
   || { cat fuzz_replay.log; exit 1; }

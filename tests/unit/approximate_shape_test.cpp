@@ -24,7 +24,7 @@ bool CountProgress(int, const char *)
 }
 
 /// Runs ApproximateShape with k proxies, counting progress calls in progressCalls.
-ShapeApproximationResult Approximate(const TMesh &in, TMesh &out, int k)
+ShapeApproximationResult ApproximateCounted(const TMesh &in, TMesh &out, int k)
 {
     ShapeApproximationParam param;
     param.partition.proxyCount = k;
@@ -36,7 +36,7 @@ TEST(ApproximateShape, CubeBecomesItsSixSides)
 {
     TMesh cube, out;
     vsa_test::MakeTessellatedCube(cube, 4);
-    const ShapeApproximationResult r = Approximate(cube, out, 6);
+    const ShapeApproximationResult r = ApproximateCounted(cube, out, 6);
     ASSERT_TRUE(r.ok) << r.error;
     EXPECT_EQ(out.VN(), 8);
     EXPECT_EQ(out.FN(), 12);
@@ -54,7 +54,7 @@ TEST(ApproximateShape, FacesInSpaceOrderKeepTheirOwnRegions)
     vsa_test::MakeTessellatedCube(cube, 6);
     vsa_test::ShuffleFaces(cube, 11);
     const vsa_test::SpatialOrderFrom always(0);
-    const ShapeApproximationResult r = Approximate(cube, out, 6);
+    const ShapeApproximationResult r = ApproximateCounted(cube, out, 6);
     ASSERT_TRUE(r.ok) << r.error;
     EXPECT_EQ(out.FN(), 12);
     ASSERT_EQ(r.inputFaceRegion.size(), cube.face.size());
@@ -79,7 +79,7 @@ TEST(ApproximateShape, RefusesWhatItCannotMeshBeforePartitioning)
 {
     auto expectRefusedUpFront = [](const TMesh &m, const std::string &words) {
         TMesh out;
-        const ShapeApproximationResult r = Approximate(m, out, 1);
+        const ShapeApproximationResult r = ApproximateCounted(m, out, 1);
         EXPECT_FALSE(r.ok);
         EXPECT_NE(r.error.find(words), std::string::npos) << r.error;
         EXPECT_EQ(progressCalls, 0) << r.error;
@@ -104,7 +104,7 @@ TEST(ApproximateShape, RefusesAnUnorientedMeshWithARepeatedVertexFaceToo)
     vsa_test::MakeTessellatedCube(cube, 3);
     std::swap(cube.face[5].V(1), cube.face[5].V(2));
     vcg::tri::Allocator<TMesh>::AddFace(cube, &cube.vert[0], &cube.vert[0], &cube.vert[1]);
-    const ShapeApproximationResult r = Approximate(cube, out, 6);
+    const ShapeApproximationResult r = ApproximateCounted(cube, out, 6);
     EXPECT_FALSE(r.ok);
     EXPECT_NE(r.error.find("not consistently oriented (3 edges"), std::string::npos) << r.error;
     EXPECT_EQ(out.FN(), 0);
@@ -187,7 +187,7 @@ TEST(ApproximateShape, FlatSquareFarFromTheOrigin)
     for (float z : {1e12f, 1e20f}) {
         TMesh square, out;
         vsa_test::BuildFromLists(square, {{0, 0, z}, {1, 0, z}, {1, 1, z}, {0, 1, z}}, {{0, 1, 2}, {0, 2, 3}});
-        const ShapeApproximationResult r = Approximate(square, out, 1);
+        const ShapeApproximationResult r = ApproximateCounted(square, out, 1);
         ASSERT_TRUE(r.ok) << r.error;
         EXPECT_EQ(out.FN(), 2);
         EXPECT_EQ(out.VN(), 4);
@@ -215,8 +215,8 @@ TEST(ApproximateShape, DeletedElementsAreLeftOut)
     vcg::tri::Allocator<TMesh>::DeleteFace(compact, compact.face[7]);
     vcg::tri::Allocator<TMesh>::CompactEveryVector(compact);
 
-    const ShapeApproximationResult r = Approximate(withDeleted, out, 6);
-    const ShapeApproximationResult rc = Approximate(compact, outOfCompact, 6);
+    const ShapeApproximationResult r = ApproximateCounted(withDeleted, out, 6);
+    const ShapeApproximationResult rc = ApproximateCounted(compact, outOfCompact, 6);
     ASSERT_TRUE(r.ok) << r.error;
     ASSERT_TRUE(rc.ok) << rc.error;
     EXPECT_EQ(r.input.faces, compact.FN());

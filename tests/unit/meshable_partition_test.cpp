@@ -24,7 +24,7 @@ namespace {
 using namespace vcg::tri::vsa;
 using vsa_test::TMesh;
 
-ShapeApproximationResult Approximate(const TMesh &in, TMesh &out, int k, bool meshable = true,
+ShapeApproximationResult ApproximateSplit(const TMesh &in, TMesh &out, int k, bool meshable = true,
                                      double maxProxyFactor = 2)
 {
     ShapeApproximationParam param;
@@ -51,7 +51,7 @@ TEST(MeshablePartition, CubeKeepsItsSixSidesAndK)
 {
     TMesh cube, out;
     vsa_test::MakeTessellatedCube(cube, 4);
-    const ShapeApproximationResult r = Approximate(cube, out, 6);
+    const ShapeApproximationResult r = ApproximateSplit(cube, out, 6);
     ASSERT_TRUE(r.ok) << r.error;
     EXPECT_EQ(r.meshable.proxiesRequested, 6);
     EXPECT_EQ(r.meshable.proxiesFinal, 6);
@@ -73,13 +73,13 @@ TEST(MeshablePartition, RingRegionsAreSplitAndKRaisedIsReported)
     TMesh box;
     vsa_test::MakeBoxWithHole(box, 16);
     TMesh kept;
-    const ShapeApproximationResult asked = Approximate(box, kept, 4, false);
+    const ShapeApproximationResult asked = ApproximateSplit(box, kept, 4, false);
     ASSERT_TRUE(asked.ok) << asked.error;
     EXPECT_EQ(asked.partition.proxyCount, 4);
     EXPECT_GT(asked.meshing.regionsCut, 0);
 
     TMesh out;
-    const ShapeApproximationResult r = Approximate(box, out, 4, true, 4);
+    const ShapeApproximationResult r = ApproximateSplit(box, out, 4, true, 4);
     ASSERT_TRUE(r.ok) << r.error;
     EXPECT_EQ(r.meshable.proxiesRequested, 4);
     EXPECT_EQ(r.meshable.proxiesFinal, 16);
@@ -102,7 +102,7 @@ TEST(MeshablePartition, IsDeterministic)
 {
     TMesh box, a, b;
     vsa_test::MakeBoxWithHole(box, 16);
-    const ShapeApproximationResult ra = Approximate(box, a, 4), rb = Approximate(box, b, 4);
+    const ShapeApproximationResult ra = ApproximateSplit(box, a, 4), rb = ApproximateSplit(box, b, 4);
     ASSERT_TRUE(ra.ok && rb.ok);
     EXPECT_EQ(ra.inputFaceRegion, rb.inputFaceRegion);
     ASSERT_EQ(a.VN(), b.VN());
@@ -116,7 +116,7 @@ TEST(MeshablePartition, KPrimeStaysWithinItsCap)
 {
     TMesh box, out;
     vsa_test::MakeBoxWithHole(box, 16);
-    const ShapeApproximationResult r = Approximate(box, out, 4);
+    const ShapeApproximationResult r = ApproximateSplit(box, out, 4);
     ASSERT_TRUE(r.ok) << r.error;
     EXPECT_EQ(r.meshable.proxiesFinal, 8);
     EXPECT_TRUE(r.meshing.validity.IsValid()) << r.meshing.validity.Summary();
@@ -132,7 +132,7 @@ TEST(MeshablePartition, NoLimitSplitsUntilEveryRegionIsOnePolygon)
 {
     TMesh box, out;
     vsa_test::MakeBoxWithHole(box, 16);
-    const ShapeApproximationResult r = Approximate(box, out, 4, true, 0);
+    const ShapeApproximationResult r = ApproximateSplit(box, out, 4, true, 0);
     ASSERT_TRUE(r.ok) << r.error;
     EXPECT_GT(r.meshable.proxiesFinal, 8);
     EXPECT_EQ(r.meshable.regionsLeft, 0);
@@ -148,7 +148,7 @@ TEST(MeshablePartition, BadLimitIsRefused)
     TMesh box, out;
     vsa_test::MakeBoxWithHole(box, 16);
     for (double limit : {-1.0, std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity()}) {
-        const ShapeApproximationResult r = Approximate(box, out, 4, true, limit);
+        const ShapeApproximationResult r = ApproximateSplit(box, out, 4, true, limit);
         EXPECT_FALSE(r.ok) << limit;
         EXPECT_NE(r.error.find("The limit on the regions must be a finite number"), std::string::npos) << r.error;
         EXPECT_EQ(out.FN(), 0) << limit;
@@ -297,7 +297,7 @@ TEST(MeshablePartition, TriangleSoupIsRefusedWithTheWeldHint)
     TMesh soup, out;
     vsa_test::BuildFromLists(soup, {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}},
                              {{0, 1, 2}, {3, 4, 5}});
-    const ShapeApproximationResult r = Approximate(soup, out, 1);
+    const ShapeApproximationResult r = ApproximateSplit(soup, out, 1);
     EXPECT_FALSE(r.ok);
     EXPECT_NE(r.error.find("weld it first (MeshLab: Cleaning and Repairing > Merge Close Vertices)"),
               std::string::npos)
@@ -411,7 +411,7 @@ TEST(MeshablePartition, CoincidentVerticesGiveNoDegenerateFace)
         vcg::tri::Allocator<TMesh>::AddFace(cube, &*copy, u, v);
         vcg::tri::Allocator<TMesh>::AddFace(cube, w, u, &*copy);
     }
-    const ShapeApproximationResult r = Approximate(cube, out, 6);
+    const ShapeApproximationResult r = ApproximateSplit(cube, out, 6);
     ASSERT_TRUE(r.ok) << r.error;
     EXPECT_EQ(r.input.degenerateFaces, 16);
     EXPECT_EQ(r.meshing.validity.degenerateFaces, 0);

@@ -13,6 +13,7 @@
 #include <vcg/complex/append.h>
 
 #include <cstdint>
+#include <cstring>
 #include <string>
 #include <utility>
 #include <vector>
@@ -183,6 +184,24 @@ private:
     }
     uint64_t state_;
 };
+
+/// The bytes of a vector of plain values: equal bytes, equal doubles bit for bit (even NaNs).
+template <class T>
+std::string Bytes(const std::vector<T> &v)
+{
+    std::string bytes(v.size() * sizeof(T), '\0');
+    if (!v.empty()) std::memcpy(&bytes[0], v.data(), bytes.size());
+    return bytes;
+}
+
+inline std::string Bytes(double x) { return Bytes(std::vector<double>{x}); }
+
+/// Everything the partitioning produced, as bytes.
+inline std::string Fingerprint(const vcg::tri::vsa::ApproximationResult &r)
+{
+    return Bytes(r.partition.faceRegion) + Bytes(r.partition.proxies) + Bytes(r.regionEnergy) + Bytes(r.energy) +
+           Bytes(r.energyPerIteration) + Bytes(r.referenceEnergy) + std::to_string(r.iterations);
+}
 
 }  // namespace vsa_test
 

@@ -26,6 +26,8 @@
 namespace {
 
 using namespace vcg::tri::vsa;
+using vsa_test::Bytes;
+using vsa_test::Fingerprint;
 using vsa_test::TMesh;
 
 struct Report
@@ -87,20 +89,6 @@ bool Monotonic(const std::vector<Report> &rs)
         if (rs[i].position < 0 || rs[i].position > 100 || (i > 0 && rs[i].position < rs[i - 1].position))
             return false;
     return !rs.empty() && rs.back().position == 100;
-}
-
-template <class T>
-std::string Bytes(const std::vector<T> &v)
-{
-    std::string bytes(v.size() * sizeof(T), '\0');
-    if (!v.empty()) std::memcpy(&bytes[0], v.data(), bytes.size());
-    return bytes;
-}
-
-std::string Fingerprint(const ApproximationResult &r)
-{
-    return Bytes(r.partition.faceRegion) + Bytes(r.partition.proxies) + Bytes(r.regionEnergy) +
-           Bytes(r.energyPerIteration) + std::to_string(r.iterations);
 }
 
 void Sphere(TMesh &m)

@@ -21,27 +21,11 @@ namespace {
 
 using namespace vcg::tri::vsa;
 using vsa_test::TMesh;
+using vsa_test::Bytes;
+using vsa_test::Fingerprint;
 using vsa_test::WithThreads;
 
 const int kThreadCounts[] = {1, 2, 3, 8};
-
-/// The bytes of a vector of plain values: equal bytes, equal doubles bit for bit (even NaNs).
-template <class T>
-std::string Bytes(const std::vector<T> &v)
-{
-    std::string bytes(v.size() * sizeof(T), '\0');
-    if (!v.empty()) std::memcpy(&bytes[0], v.data(), bytes.size());
-    return bytes;
-}
-
-std::string Bytes(double x) { return Bytes(std::vector<double>{x}); }
-
-/// Everything the partitioning produced, as bytes.
-std::string Fingerprint(const ApproximationResult &r)
-{
-    return Bytes(r.partition.faceRegion) + Bytes(r.partition.proxies) + Bytes(r.regionEnergy) + Bytes(r.energy) +
-           Bytes(r.energyPerIteration) + Bytes(r.referenceEnergy) + std::to_string(r.iterations);
-}
 
 /// The output mesh's coordinates and triangles, as bytes.
 std::string Fingerprint(const TMesh &m)
