@@ -1,5 +1,5 @@
-// vsa-bench: times our VSA (partitioning, then meshing) on one mesh and prints one JSON line
-// (bench/README.md).
+// vsa-bench: times our VSA (ApproximateShape: partitioning, then meshing) on one mesh and
+// prints one JSON line (bench/README.md).
 //   vsa-bench --mesh FILE --k N --metric l21|l2 --init random|farthest|hierarchical
 //             --iterations N --seed S [--target-error E] [--tolerance T] [--relaxations R]
 //             [--teleport 0|1] [--anchor-threshold A] [--chord-gap G] [--chord-error F]
@@ -27,6 +27,7 @@
 #include <algorithm>
 #include <chrono>
 #include <memory>
+#include <map>
 #include <set>
 #include <string>
 #include <utility>
@@ -143,9 +144,27 @@ struct ProgressGaps
 };
 ProgressGaps progressGaps;
 
-/// A vcg::CallBackPos that feeds progressGaps.
+/// The stage of ApproximateShape a progress text belongs to.
+std::string StageOf(const std::string &text)
+{
+    if (text.rfind("VSA meshing", 0) == 0) return "meshing";
+    if (text == "VSA: setting up") return "setup";
+    if (text == vcg::tri::vsa::detail::kSeedingText) return "seeding";
+    if (text == "VSA: Lloyd iterations") return "iterations";
+    return "meshable";  // "VSA: splitting regions that do not mesh as one polygon"
+}
+
+/// The peak resident set when each stage started: what the stages before it reached.
+std::map<std::string, double> peakRssAtStart;
+
+/// A vcg::CallBackPos that feeds progressGaps and notes the peak memory as each stage starts.
 bool NoteProgress(const int, const char *text)
 {
+    const std::string stage = StageOf(text);
+    if (stage != progressGaps.stage) {
+        peakRssAtStart[stage] = vsa_bench::PeakRssMb();
+        progressGaps.Start(stage);
+    }
     progressGaps.Mark(text);
     return true;
 }
@@ -190,48 +209,31 @@ int main(int argc, char **argv)
     const double rssAfterLoadMb = vsa_bench::CurrentRssMb();
 
     try {
-        vsa_bench::Stopwatch clock;
-        progressGaps.Start("setup");
-        ProgressStage setup(&NoteProgress, "VSA: setting up");  // as ApproximateShape reports it
-        setup.Step(0, 100, vcg::tri::vsa::detail::kSetupItems * m.FN());
-        IndexedMesh snapshot = BuildIndexedMesh(m, nullptr, FaceOrder::kSpatialWhenLarge);  // as ApproximateShape
-        if (IsTriangleSoup(snapshot)) {  // refused as ApproximateShape refuses it
-            json.Add("error", std::string("refused: ") + kTriangleSoupRefusal).Print();
-            return 1;
-        }
-        const int collapsed = CollapseCoincidentEdgesIfMeshable(snapshot);  // as ApproximateShape does
-        Approximation approximation(std::move(snapshot), o.param);
-        setup.Done();
-        const double tSetup = clock.Seconds();
-        clock.Restart();
-        progressGaps.Start("seeding");
-        approximation.Initialize(&NoteProgress);
-        const double tSeed = clock.Seconds();
-        clock.Restart();
-        progressGaps.Start("iterations");
-        const int iterations = approximation.Run(o.param.maxIterations, &NoteProgress);
-        const double tIterations = clock.Seconds();
-        const int faces = approximation.Mesh().FaceCount();
-        // The energy at the k asked, before the meshable split adds regions: what CGAL's compares with.
-        const double energyAsked = approximation.Energy();
-        const double peakRssPartitionMb = vsa_bench::PeakRssMb();
-        clock.Restart();
-        progressGaps.Start("meshable");
-        MeshingStart start;
-        const MeshablePartitionReport meshable =
-            MakePartitionMeshable<BMesh::CoordType>(approximation, o.meshing, o.meshable, &NoteProgress, &start);
-        const double peakRssMeshableMb = vsa_bench::PeakRssMb();
-        const double tMeshable = clock.Seconds();
-        progressGaps.Start("meshing");
-        const ApproximationResult partition = approximation.Result();
+        ShapeApproximationParam param;
+        param.partition = o.param;
+        param.meshable = o.meshable;
+        param.meshing = o.meshing;
         BMesh output;
-        const MeshingReport meshing =
-            BuildApproximatingMesh(approximation.Mesh(), partition.partition, o.meshing, output, &NoteProgress,
-                                   std::move(start));
-        const double tMesh = clock.Seconds();
+        // The product's whole pipeline, as the plugin and pymeshlab run it.
+        const ShapeApproximationResult result = ApproximateShape(m, output, param, &NoteProgress);
         progressGaps.Start("measuring");
         // Before the measuring below allocates its own copies and samples.
         const double peakRssMb = vsa_bench::PeakRssMb();
+        if (!result.ok && result.partition.partition.faceRegion.empty()) {  // refused, or failed before meshing
+            json.Add("error", result.error).Print();
+            return 1;
+        }
+        const ApproximationResult &partition = result.partition;
+        const MeshingReport &meshing = result.meshing;
+        const MeshablePartitionReport &meshable = result.meshable;
+        const double tSetup = result.secondsSetup, tSeed = result.secondsSeeding, tIterations = result.secondsIterations;
+        const double tMeshable = result.secondsMeshable, tMesh = result.secondsMeshable + result.secondsMeshing;
+        const int iterations = partition.iterations;
+        const int faces = m.FN();
+        const auto peakAt = [&](const char *stage) {
+            const auto found = peakRssAtStart.find(stage);
+            return found != peakRssAtStart.end() ? found->second : peakRssMb;
+        };
         json.Add("t_seed_s", tSeed)
             .Add("t_iterations_s", tIterations)
             .Add("iterations_run", iterations)
@@ -239,11 +241,11 @@ int main(int argc, char **argv)
             .Add("t_meshable_s", tMeshable)
             .Add("t_total_s", tSetup + tSeed + tIterations + tMesh)
             .Add("energy", partition.energy)
-            .Add("energy_asked", energyAsked)
+            .Add("energy_asked", result.energyAsked)
             .Add("peak_rss_mb", peakRssMb)
             .Add("rss_after_load_mb", rssAfterLoadMb)
-            .Add("peak_rss_partition_mb", peakRssPartitionMb)
-            .Add("peak_rss_meshable_mb", peakRssMeshableMb)
+            .Add("peak_rss_partition_mb", peakAt("meshable"))
+            .Add("peak_rss_meshable_mb", peakAt("meshing"))
             .Add("threads", vcg::tri::vsa::MaxThreads())
             .Add("seed", o.param.randomSeed)
             .Add("iterations", o.param.maxIterations)
@@ -280,7 +282,8 @@ int main(int argc, char **argv)
             .Add("splits_folds", meshable.splits[int(RegionFault::Folds)])
             .Add("splits_faces_away", meshable.splits[int(RegionFault::FacesAway)])
             .Add("splits_not_disc", meshable.splits[int(RegionFault::NotDisc)])
-            .Add("collapsed_edges", collapsed);
+            .Add("kept_asked", meshable.keptAsked)
+            .Add("collapsed_edges", result.collapsedEdges);
         const int regionsOut = int(std::set<int>(meshing.faceRegion.begin(), meshing.faceRegion.end()).size());
         const vsa_bench::PolygonLabels polygons = vsa_bench::AddOutputQualityKeys(json, m, output, regionsOut);
         if (!o.out.empty() && !WriteApproximation(output, meshing.faceRegion, partition.proxyCount, o.out)) {

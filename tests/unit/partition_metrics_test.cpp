@@ -126,7 +126,8 @@ TEST(PartitionMetrics, L21FitIsTheNormalizedAreaWeightedMeanNormal)
     L21Metric::Moments moments = metric.EmptyMoments(Point3d(0, 0, 0));
     metric.Add(moments, 0);
     metric.Add(moments, 1);
-    const Proxy p = metric.Fit(moments, {});
+    // A set fallback, unused here: Point3d{} would be uninitialized.
+    const Proxy p = metric.Fit(moments, {Point3d(0, 0, 0), Point3d(0, 0, 1)});
     const Point3d expected = Point3d(1, 0, 2) / std::sqrt(5.0);
     EXPECT_NEAR((p.normal - expected).Norm(), 0, 1e-15);
     const Point3d centroid = (g.centroid[0] * 2 + g.centroid[1]) / 3;

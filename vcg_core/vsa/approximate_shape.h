@@ -41,6 +41,8 @@ struct ShapeApproximationResult
     /// snapshot, which orders large meshes in space (FaceOrder); inputFaceRegion is per input face.
     ApproximationResult partition;
     MeshablePartitionReport meshable; ///< k' and why the regions were split
+    double energyAsked = 0;           ///< the energy of the k regions asked for, after the Lloyd iterations
+    int collapsedEdges = 0;           ///< vertices merged away by CollapseCoincidentEdges
     MeshingReport meshing;            ///< anchors, fallbacks, validity of the output
     std::vector<int> inputFaceRegion; ///< per face of the input's container; -1 for deleted faces
     /// Wall-clock time per stage: the snapshot, its checks and the faces' geometry; seeding; the
@@ -247,7 +249,7 @@ ShapeApproximationResult ApproximateShape(const InMeshType &in, OutMeshType &out
             result.error = kTriangleSoupRefusal;
             return result;
         }
-        const int collapsed = CollapseCoincidentEdgesIfMeshable(snapshot);
+        result.collapsedEdges = CollapseCoincidentEdgesIfMeshable(snapshot);
         Approximation approximation(std::move(snapshot), param.partition);
         const IndexedMesh &mesh = approximation.Mesh();
         setup.Done();
@@ -260,6 +262,7 @@ ShapeApproximationResult ApproximateShape(const InMeshType &in, OutMeshType &out
         approximation.Run(param.partition.maxIterations, detail::ProgressSlice::Enter(cb, 13, 70));
         result.secondsIterations = detail::SecondsSince(start);
         const ApproximationResult asked = approximation.Result();
+        result.energyAsked = asked.energy;
         start = std::chrono::steady_clock::now();
         MeshingStart meshingStart;
         result.meshable = MakePartitionMeshable<typename OutMeshType::CoordType>(
@@ -273,8 +276,8 @@ ShapeApproximationResult ApproximateShape(const InMeshType &in, OutMeshType &out
         if (result.meshable.proxiesFinal > result.meshable.proxiesRequested)
             detail::KeepBetterOfAsked(mesh, asked, param.meshing, result, out);
         result.secondsMeshing = detail::SecondsSince(start);
-        if (collapsed > 0)
-            result.partition.messages.push_back(std::to_string(collapsed) +
+        if (result.collapsedEdges > 0)
+            result.partition.messages.push_back(std::to_string(result.collapsedEdges) +
                                                 " edges between distinct vertices at one position collapsed (their "
                                                 "faces have no area)");
         const std::string meshable = result.meshable.Summary();
