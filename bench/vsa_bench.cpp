@@ -8,9 +8,10 @@
 // The tolerance defaults to 0 so that --iterations Lloyd iterations run (unless the partition
 // cycles), like CGAL's run(N): per-iteration timings compare. --out writes the approximating
 // mesh with each face coloured by its region (format from the extension: ply, off, obj).
-// max_progress_gap_s is the longest the progress callback went unheard from the start of the
-// set-up to the end of the meshing (loading the file excluded), max_progress_gap_at where, and
-// max_progress_gap_<stage>_s the longest within each stage.
+// max_progress_gap_s is the longest the progress callback went unheard from the set-up's first
+// report to the end of the pipeline (loading the file excluded), max_progress_gap_at where, and
+// max_progress_gap_<stage>_s the longest within each stage (known by its reports' text; the gap
+// up to a stage's first report is its own).
 #include "off_file.h"
 #include "output_quality.h"
 
@@ -133,11 +134,17 @@ struct ProgressGaps
         last = now;
     }
 
-    /// Ends the current stage, if any, and starts `name` (the gap up to its first report is its own).
+    /// Ends the current stage, if any, and starts `name`.
     void Start(const std::string &name)
     {
+        if (!largestPerStage.empty()) Mark("end");
+        Switch(name);
+    }
+
+    /// Starts `name`, whose first report has come: the gap up to it is its own.
+    void Switch(const std::string &name)
+    {
         if (largestPerStage.empty()) last = std::chrono::steady_clock::now();  // after loading
-        else Mark("end");
         stage = name;
         largestPerStage.emplace_back(name, 0.0);
     }
@@ -163,7 +170,7 @@ bool NoteProgress(const int, const char *text)
     const std::string stage = StageOf(text);
     if (stage != progressGaps.stage) {
         peakRssAtStart[stage] = vsa_bench::PeakRssMb();
-        progressGaps.Start(stage);
+        progressGaps.Switch(stage);
     }
     progressGaps.Mark(text);
     return true;
