@@ -115,15 +115,16 @@ inline std::tuple<bool, bool, int> MeshingRank(const MeshingReport &m)
 }
 
 /// When the split partition's output (in `result` and `out`) is not valid, meshes the partition
-/// as asked (`asked`, k regions) too and keeps that if it does better: splitting must never cost
-/// validity (a 6-face prism at 1e37 split into single faces met itself once rounded to float).
+/// as asked (`asked`, k regions) too, reporting to `cb`, and keeps that if it does better:
+/// splitting must never cost validity (a 6-face prism at 1e37 split into single faces met itself
+/// once rounded to float).
 template <class OutMeshType>
 void KeepBetterOfAsked(const IndexedMesh &mesh, const ApproximationResult &asked, const MeshingParam &param,
-                       ShapeApproximationResult &result, OutMeshType &out)
+                       ShapeApproximationResult &result, OutMeshType &out, CallBackPos *cb)
 {
     if (result.meshing.ok && result.meshing.validity.IsValid()) return;
     OutMeshType other;
-    MeshingReport report = BuildApproximatingMesh(mesh, asked.partition, param, other);
+    MeshingReport report = BuildApproximatingMesh(mesh, asked.partition, param, other, cb);
     if (!(MeshingRank(report) < MeshingRank(result.meshing))) return;
     result.meshing = std::move(report);
     result.partition = asked;
@@ -274,7 +275,9 @@ ShapeApproximationResult ApproximateShape(const InMeshType &in, OutMeshType &out
         result.meshing = BuildApproximatingMesh(mesh, result.partition.partition, param.meshing, out,
                                                 detail::ProgressSlice::Enter(cb, 80, 100), std::move(meshingStart));
         if (result.meshable.proxiesFinal > result.meshable.proxiesRequested)
-            detail::KeepBetterOfAsked(mesh, asked, param.meshing, result, out);
+            // A second meshing, as long as the first: the bar goes over the meshing's slice again.
+            detail::KeepBetterOfAsked(mesh, asked, param.meshing, result, out,
+                                      detail::ProgressSlice::Enter(cb, 80, 100));
         result.secondsMeshing = detail::SecondsSince(start);
         if (result.collapsedEdges > 0)
             result.partition.messages.push_back(std::to_string(result.collapsedEdges) +
