@@ -1,6 +1,6 @@
 // The meshing stage on CGAL's sample meshes, partitioned by our own VSA: a quick test, and the
 // sweep of 8 meshes x k in {20, 100, 500, 2000} x 3 seedings (about 10 s), which prints a table:
-//   vsa_unit_tests --gtest_filter='MeshingSweep.*'
+//   vsa_unit_tests --gtest_filter='*/MeshingSweep.*'
 #include "meshing_test_util.h"
 #include "test_meshes.h"
 
@@ -12,6 +12,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cctype>
 #include <chrono>
 #include <cstdio>
 #include <set>
@@ -410,16 +411,29 @@ TEST(MeshingRealMeshes, ExactRegionsGiveAnExactOutline)
     EXPECT_LT(farthestInputVertex(MeshingParam().chordErrorFactor), 1e-6);
 }
 
-TEST(MeshingSweep, RealMeshes)
+// One test per mesh, so that gtest's shards and CTest's jobs share the sweep out.
+class MeshingSweep : public ::testing::TestWithParam<const char *>
 {
-    const std::vector<std::string> meshes = {"fandisk.off", "blade.off",  "bunny00.off", "elephant.off",
-                                             "mech-holes-shark.off", "knot1.off", "holes.off",
-                                             "elephant-with-holes.off"};
-    for (const std::string &mesh : meshes)
-        for (int k : {20, 100, 500, 2000})
-            for (SeedingMethod init : {SeedingMethod::Random, SeedingMethod::Farthest, SeedingMethod::Hierarchical})
-                CheckCase({mesh, k, init}, true);
+};
+
+TEST_P(MeshingSweep, RealMesh)
+{
+    for (int k : {20, 100, 500, 2000})
+        for (SeedingMethod init : {SeedingMethod::Random, SeedingMethod::Farthest, SeedingMethod::Hierarchical})
+            CheckCase({GetParam(), k, init}, true);
 }
+
+INSTANTIATE_TEST_SUITE_P(CgalSamples, MeshingSweep,
+                         ::testing::Values("fandisk.off", "blade.off", "bunny00.off", "elephant.off",
+                                           "mech-holes-shark.off", "knot1.off", "holes.off",
+                                           "elephant-with-holes.off"),
+                         [](const ::testing::TestParamInfo<const char *> &info) {
+                             std::string name = info.param;
+                             name = name.substr(0, name.find('.'));
+                             for (char &c : name)
+                                 if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
+                             return name;
+                         });
 
 // Saved as text and read back, the output keeps what was checked in memory. MeshLab's OFF writer
 // prints 7 significant digits; a reader in double gets those decimals, up to 4 units in the last
