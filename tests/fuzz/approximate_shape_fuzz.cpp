@@ -1,7 +1,7 @@
 // libFuzzer target over the one-shot ApproximateShape: a small mesh and every parameter decoded
 // from the bytes, then what a caller relies on after success checked; a broken check aborts.
-// Built with clang as a fuzzer (run_campaign.sh), and with any compiler as a replay of the seeds
-// and regressions (replay_main.cpp, a ctest test).
+// Built with clang as a fuzzer (run_campaign.sh), and with any compiler into the unit tests, which
+// replay the seeds and regressions (tests/unit/fuzz_inputs_test.cpp).
 //
 // Layout of an input (bytes past the end read as 0):
 //   0      flags: bit 0 L2 metric, bits 1-2 seeding (mod 3), bit 3 teleport off, bit 4 anchors
@@ -143,8 +143,8 @@ bool ClearlyValid(const MeshType &m)
 /// self-intersections, which the repair removes from real meshes but not from every input (the
 /// report counts them).
 template <class MeshType>
-void Check(const MeshType &in, const std::vector<typename MeshType::CoordType> &inputCoords, bool expectValid,
-           const ShapeApproximationResult &r, const MeshType &out)
+void CheckApproximation(const MeshType &in, const std::vector<typename MeshType::CoordType> &inputCoords, bool expectValid,
+                        const ShapeApproximationResult &r, const MeshType &out)
 {
     Require(in.vert.size() == inputCoords.size(), "input vertex count changed");
     for (size_t v = 0; v < in.vert.size(); ++v)
@@ -195,7 +195,7 @@ void Check(const MeshType &in, const std::vector<typename MeshType::CoordType> &
 }
 
 template <class MeshType>
-void Run(Reader &in, const ShapeApproximationParam &param, double scale, const double offset[3])
+void ApproximateDecoded(Reader &in, const ShapeApproximationParam &param, double scale, const double offset[3])
 {
     MeshType mesh, out;
     DecodeMesh(in, scale, offset, mesh);
@@ -207,7 +207,7 @@ void Run(Reader &in, const ShapeApproximationParam &param, double scale, const d
         param.meshing.repairRounds > 0 && param.meshing.maxAnchorMove <= MeshingParam().maxAnchorMove &&
         ClearlyValid(mesh);
     const ShapeApproximationResult r = ApproximateShape(mesh, out, param);
-    Check(mesh, coords, expectValid, r, out);
+    CheckApproximation(mesh, coords, expectValid, r, out);
 }
 
 }  // namespace
@@ -241,7 +241,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     const double scale = std::ldexp(1.0, in.Signed());
     const uint8_t offsets = in.Byte();
     const double offset[3] = {kOffsets[offsets >> 4], kOffsets[offsets >> 4], kOffsets[offsets & 15]};
-    if (flags & 64) Run<vsa_test::BareMesh>(in, param, scale, offset);
-    else Run<vsa_test::TMesh>(in, param, scale, offset);
+    if (flags & 64) ApproximateDecoded<vsa_test::BareMesh>(in, param, scale, offset);
+    else ApproximateDecoded<vsa_test::TMesh>(in, param, scale, offset);
     return 0;
 }

@@ -4,7 +4,8 @@
 # Builds build-fuzz/ with clang (installed here if missing), then fuzzes from the seeds, the
 # regressions and the corpus grown by earlier campaigns (tests/fuzz/corpus/, git-ignored).
 # A crash or broken postcondition leaves its input in tests/fuzz/artifacts/ (git-ignored): once
-# fixed, copy it into tests/fuzz/regressions/, which ctest replays (fuzz_regressions).
+# fixed, copy it into tests/fuzz/regressions/, which the unit tests replay
+# (FuzzInputs.SeedsAndRegressionsReplayWithoutFinding).
 # The last lines are libFuzzer's final stats (runs, coverage); the whole log is in
 # build-fuzz/campaign.log.
 set -euo pipefail
