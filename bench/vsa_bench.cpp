@@ -111,9 +111,9 @@ std::string Parse(int argc, char **argv, Options &o)
     return {};
 }
 
-/// Wall-clock gaps between progress reports, counting each stage's start and end as reports
-/// (issue 30: the progress bar should move at least once a second): the largest per stage, and
-/// the largest of all with the report that ended it.
+/// Wall-clock gaps between progress reports, counting the pipeline's end as one (issue 30: the
+/// progress bar should move at least once a second): the largest per stage, and the largest of
+/// all with the report that ended it.
 struct ProgressGaps
 {
     std::chrono::steady_clock::time_point last;

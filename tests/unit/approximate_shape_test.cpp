@@ -8,7 +8,6 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <set>
 #include <string>
 #include <vector>
 
@@ -139,40 +138,6 @@ TEST(ApproximateShape, ProjectedAnchorsStayWithinTheFloatRange)
     ASSERT_TRUE(r.ok) << r.error;
     ExpectFiniteOutput(out, r);
     EXPECT_TRUE(r.meshing.validity.IsValid()) << r.meshing.validity.Summary();
-}
-
-std::vector<std::string> progressTexts;
-bool RecordText(int, const char *text)
-{
-    progressTexts.emplace_back(text);
-    return true;
-}
-
-/// bull.off meets itself in 3 face pairs. At k = 1000 (hierarchical, seed 1, 30 iterations) the
-/// meshable split's 1170 regions give an output that keeps them; the 1000 regions asked for give
-/// a valid one, which is kept, and its meshing reports progress too. (If the split comes to give
-/// bull a valid output, this test needs another case where it does not.)
-TEST(ApproximateShape, AnInvalidSplitKeepsTheRegionsAskedFor)
-{
-    TMesh bull, out;
-    std::string error;
-    ASSERT_TRUE(vsa_test::LoadMesh(bull, vsa_test::CgalMesh("bull.off"), &error)) << error;
-    ShapeApproximationParam param;
-    param.partition.proxyCount = 1000;
-    param.partition.tolerance = 0;
-    param.partition.randomSeed = 1;
-    progressTexts.clear();
-    const ShapeApproximationResult r = ApproximateShape(bull, out, param, &RecordText);
-    ASSERT_TRUE(r.ok) << r.error;
-    ASSERT_TRUE(r.meshable.keptAsked) << r.meshable.Summary();
-    EXPECT_GT(r.meshable.proxiesFinal, 1000);
-    EXPECT_TRUE(r.meshing.validity.IsValid()) << r.meshing.validity.Summary();
-    EXPECT_EQ(r.meshing.validity.selfIntersections, 0);
-    EXPECT_EQ(int(r.partition.partition.proxies.size()), 1000);
-    EXPECT_EQ(std::set<int>(r.meshing.faceRegion.begin(), r.meshing.faceRegion.end()).size(), 1000u);
-    EXPECT_EQ(r.partition.energy, r.energyAsked);
-    EXPECT_EQ(r.meshable.Summary().rfind("k kept at 1000", 0), 0u) << r.meshable.Summary();
-    EXPECT_EQ(std::count(progressTexts.begin(), progressTexts.end(), std::string("VSA meshing: done")), 2);
 }
 
 /// In `tetrahedron`, the unit one's corners times `scale`, except vertex 1 at x = `x1`.

@@ -15,6 +15,7 @@
 #include <algorithm>
 #include <cstring>
 #include <map>
+#include <set>
 #include <string>
 #include <thread>
 #include <vector>
@@ -210,6 +211,34 @@ TEST(Progress, ApproximateShapeReportsSetupSeedingAndIterationsInOrder)
     }
     EXPECT_EQ(stage, 2u);
     EXPECT_EQ(last, 70);
+}
+
+/// bull.off meets itself in 3 face pairs. At k = 1000 (hierarchical, seed 1, 30 iterations) the
+/// meshable split's 1170 regions give an output that keeps them; the 1000 regions asked for give
+/// a valid one, which is kept, and its meshing reports progress too. (If the split comes to give
+/// bull a valid output, this test needs another case where it does not.) Here for the reports it
+/// reads.
+TEST(ApproximateShape, AnInvalidSplitKeepsTheRegionsAskedFor)
+{
+    TMesh bull, out;
+    std::string error;
+    ASSERT_TRUE(vsa_test::LoadMesh(bull, vsa_test::CgalMesh("bull.off"), &error)) << error;
+    ShapeApproximationParam param;
+    param.partition.proxyCount = 1000;
+    param.partition.tolerance = 0;
+    param.partition.randomSeed = 1;
+    reports.clear();
+    const ShapeApproximationResult r = ApproximateShape(bull, out, param, &Record);
+    ASSERT_TRUE(r.ok) << r.error;
+    ASSERT_TRUE(r.meshable.keptAsked) << r.meshable.Summary();
+    EXPECT_GT(r.meshable.proxiesFinal, 1000);
+    EXPECT_TRUE(r.meshing.validity.IsValid()) << r.meshing.validity.Summary();
+    EXPECT_EQ(r.meshing.validity.selfIntersections, 0);
+    EXPECT_EQ(int(r.partition.partition.proxies.size()), 1000);
+    EXPECT_EQ(std::set<int>(r.meshing.faceRegion.begin(), r.meshing.faceRegion.end()).size(), 1000u);
+    EXPECT_EQ(r.partition.energy, r.energyAsked);
+    EXPECT_EQ(r.meshable.Summary().rfind("k kept at 1000", 0), 0u) << r.meshable.Summary();
+    EXPECT_EQ(Reports("VSA meshing: done").size(), 2u);
 }
 
 /// The meshable split reports from within its trials, not only between rounds, and reporting
