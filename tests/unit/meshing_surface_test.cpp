@@ -112,10 +112,11 @@ TEST(MeshingSurface, NonManifoldVertexIsSplitPerFan)
     EXPECT_EQ(run.out.FN(), 8);
 }
 
-TEST(MeshingSurface, WeldedVerticesAreSplitPerFanInOrderOfFirstUse)
+TEST(MeshingSurface, WeldedVerticesAreSplitPerFanAfterTheOthers)
 {
     // Two spheres welded at many vertices that share no edge: each welded vertex has two fans,
-    // one per sphere, and splitting gives the second sphere's fan a vertex of its own.
+    // one per sphere, and splitting gives the second sphere's fan a vertex of its own, numbered
+    // after the vertices used, which keep their order (the welded vertices' copies are unused).
     TMesh sphere;
     vcg::tri::Sphere(sphere, 3);
     IndexedMesh im = BuildIndexedMesh(sphere);
@@ -148,15 +149,20 @@ TEST(MeshingSurface, WeldedVerticesAreSplitPerFanInOrderOfFirstUse)
     std::vector<int> sourceVertex;
     EXPECT_EQ(detail::SplitVerticesPerFan(split, sourceVertex), weldCount);
     ASSERT_EQ(split.VertexCount(), 2 * vertices);
-    int seen = 0;  // vertices are numbered as the corners first use them
+    const int used = split.VertexCount() - weldCount;
+    for (int v = 1; v < used; ++v) ASSERT_LT(sourceVertex[v - 1], sourceVertex[v]);
+    int seen = used;  // the extra fans' vertices, as the corners first use them
     for (const auto &t : split.faces)
-        for (int v : t) {
-            ASSERT_LE(v, seen);
-            seen += v == seen;
-        }
+        for (int v : t)
+            if (v >= used) {
+                ASSERT_LE(v, seen);
+                seen += v == seen;
+            }
+    EXPECT_EQ(seen, split.VertexCount());
     for (int v = 0; v < split.VertexCount(); ++v) EXPECT_EQ(split.positions[v], im.positions[sourceVertex[v]]);
     for (int f = 0; f < faces; ++f)
         for (int i = 0; i < 3; ++i) {
+            EXPECT_LT(split.faces[f][i], used);  // the first sphere's fans come first
             EXPECT_EQ(sourceVertex[split.faces[f][i]], im.faces[f][i]);
             EXPECT_EQ(sourceVertex[split.faces[f + faces][i]], im.faces[f + faces][i]);
             EXPECT_NE(split.faces[f][i], split.faces[f + faces][i]);
@@ -198,14 +204,14 @@ TEST(MeshingSurface, ReusesTheSnapshotsLinksAsIfLinkedAgain)
     MakeTorus(torus, 2, 0.5f, 40, 20);
     {
         // In space order, the corners first use the vertices out of their order: the surface
-        // numbers them anew, and must do so with the links reused too.
+        // keeps the snapshot's numbers, with the links reused or not.
         const SpatialOrderFrom everyMesh(1);
         const IndexedMesh im = BuildIndexedMesh(torus, nullptr, FaceOrder::kSpatialWhenLarge);
         ASSERT_TRUE(im.diagnostics.has_value());
         const MeshingSurface s = ExpectSameSurfaceAsRelinked(im);
         std::vector<int> identity(s.sourceVertex.size());
         std::iota(identity.begin(), identity.end(), 0);
-        EXPECT_NE(static_cast<const std::vector<int> &>(s.sourceVertex), identity);
+        EXPECT_EQ(static_cast<const std::vector<int> &>(s.sourceVertex), identity);
         EXPECT_EQ(s.splitVertices, 0);
     }
     {
@@ -220,7 +226,9 @@ TEST(MeshingSurface, ReusesTheSnapshotsLinksAsIfLinkedAgain)
         TMesh m;
         vsa_test::BuildFromLists(m, {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {1, 1, 1}},
                                  {{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}, {4, 4, 1}});
-        EXPECT_EQ(ExpectSameSurfaceAsRelinked(BuildIndexedMesh(m)).ignoredFaces, 1);
+        const MeshingSurface s = ExpectSameSurfaceAsRelinked(BuildIndexedMesh(m));
+        EXPECT_EQ(s.ignoredFaces, 1);
+        EXPECT_EQ(s.VertexCount(), 4);  // the vertex only that face used is dropped
     }
 }
 

@@ -126,31 +126,73 @@ int TwinEdge(const Mesh &s, int f, int i)
     return -1;
 }
 
-/// Gives the corners of `m` new vertices, one per key (keyOf(corner), below keyCount), numbered
-/// in the order corners first use them; `sourceVertex` gets each new vertex's vertex of `m`.
-/// keyOf(corner) is asked before that corner gets its new vertex.
+/// Gives the corners of `m` new vertices, one per key (keyOf(corner), below keyCount): the first
+/// key of each vertex of `m` (in corner order) keeps that vertex's number, the others get
+/// numbers after them, in the order corners first use them; then the vertices no corner uses
+/// are dropped, the others keeping their order. So a mesh whose vertices are all used and have
+/// one key each keeps its numbers. `sourceVertex` gets each new vertex's vertex of `m`;
+/// returns how many vertices the keys added. keyOf(corner) is asked before that corner gets its
+/// new vertex.
 template <class KeyOf>
-void NumberVerticesByFirstUse(IndexedMesh &m, size_t keyCount, KeyOf &&keyOf, std::vector<int> &sourceVertex)
+int NumberVerticesPerKey(IndexedMesh &m, size_t keyCount, KeyOf &&keyOf, std::vector<int> &sourceVertex)
 {
     const int cornerCount = 3 * m.FaceCount();
+    const int vertexCount = m.VertexCount();
     std::vector<int> newVertex(keyCount, -1);
-    std::vector<Point3d> positions;
-    sourceVertex.clear();
+    std::vector<char> used(size_t(vertexCount), 0);
+    std::vector<int> extraSource;  // per extra vertex, numbered vertexCount + its index
     ProgressCounter progress;
     for (int c = 0; c < cornerCount; ++c) {
         progress.Count();
         int &vertex = m.faces[c / 3][c % 3];
         int &fresh = newVertex[size_t(keyOf(c))];
         if (fresh < 0) {
-            fresh = int(positions.size());
-            positions.push_back(m.positions[vertex]);
-            sourceVertex.push_back(vertex);
+            if (!used[vertex]) {
+                used[vertex] = 1;
+                fresh = vertex;
+            } else {
+                fresh = vertexCount + int(extraSource.size());
+                extraSource.push_back(vertex);
+            }
         }
         vertex = fresh;
     }
-    positions.shrink_to_fit();  // the surface keeps these arrays: no room to spare
-    sourceVertex.shrink_to_fit();
+    std::vector<int> kept(size_t(vertexCount), -1);  // the new number of each used vertex
+    sourceVertex.clear();
+    for (int v = 0; v < vertexCount; ++v)
+        if (used[v]) {
+            kept[v] = int(sourceVertex.size());
+            sourceVertex.push_back(v);
+        }
+    const int usedCount = int(sourceVertex.size());
+    sourceVertex.insert(sourceVertex.end(), extraSource.begin(), extraSource.end());
+    sourceVertex.shrink_to_fit();  // the surface keeps these arrays: no room to spare
+    if (usedCount < vertexCount)
+        for (auto &t : m.faces)
+            for (int &v : t) v = v < vertexCount ? kept[v] : v - vertexCount + usedCount;
+    std::vector<Point3d> positions(sourceVertex.size());
+    for (size_t v = 0; v < sourceVertex.size(); ++v) positions[v] = m.positions[size_t(sourceVertex[v])];
     m.positions.swap(positions);
+    return int(extraSource.size());
+}
+
+/// The faces around each vertex of `m`, in face order: vertexFaces[offset[v] .. offset[v + 1]).
+inline void FacesAroundVertices(const IndexedMesh &m, std::vector<int> &offset, std::vector<int> &faces)
+{
+    BuildLists(
+        size_t(m.FaceCount()),
+        [&m](size_t f, auto &&add) {
+            for (int v : m.faces[f]) add(v, int(f));
+        },
+        m.VertexCount(), offset, faces);
+}
+
+/// Whether every vertex has a face, from FacesAroundVertices' offsets.
+inline bool EveryVertexUsed(const std::vector<int> &offset)
+{
+    for (size_t v = 0; v + 1 < offset.size(); ++v)
+        if (offset[v] == offset[v + 1]) return false;
+    return true;
 }
 
 /// Gives every fan of faces around a vertex of `m` (linked) its own vertex, so that each vertex
@@ -168,16 +210,8 @@ inline int SplitVerticesPerFan(IndexedMesh &m, std::vector<int> &sourceVertex)
             Unite(cornerParent, 3 * f + i, 3 * g + (j + 1) % 3);
             Unite(cornerParent, 3 * f + (i + 1) % 3, 3 * g + j);
         }
-    const size_t inputVertexCount = m.positions.size();
-    NumberVerticesByFirstUse(m, cornerParent.size(), [&](int c) { return FindRoot(cornerParent, c); }, sourceVertex);
-    std::vector<char> used(inputVertexCount, 0);
-    int inputVerticesUsed = 0;
-    for (int v : sourceVertex)
-        if (!used[v]) {
-            used[v] = 1;
-            ++inputVerticesUsed;
-        }
-    return int(m.positions.size()) - inputVerticesUsed;
+    return NumberVerticesPerKey(m, cornerParent.size(), [&](int c) { return FindRoot(cornerParent, c); },
+                                sourceVertex);
 }
 
 /// Scratch of the disc growths. A growth reads and writes only the faces of its own region
@@ -823,21 +857,25 @@ inline bool BuildSurfaceTopology(const IndexedMesh &im, MeshingSurface &s, std::
     }
     error = MeshingRefusal(diag);
     if (!error.empty()) return false;
-    std::vector<int> sourceVertex;
+    std::vector<int> sourceVertex, vertexFaceOffset, vertexFaces;
     if (linked && diag.nonManifoldVertices == 0) {
-        const size_t vertexCount = kept.positions.size();
-        detail::NumberVerticesByFirstUse(kept, vertexCount, [&](int c) { return kept.faces[c / 3][c % 3]; },
+        // Every vertex used keeps its number (NumberVerticesPerKey), so a snapshot whose vertices
+        // are all used needs no serial pass over its corners.
+        detail::FacesAroundVertices(kept, vertexFaceOffset, vertexFaces);
+        if (detail::EveryVertexUsed(vertexFaceOffset)) {
+            sourceVertex.resize(kept.positions.size());
+            ForEachChunk(sourceVertex.size(), [&](int, size_t begin, size_t end) {
+                std::iota(sourceVertex.begin() + ptrdiff_t(begin), sourceVertex.begin() + ptrdiff_t(end), int(begin));
+            });
+        } else {
+            detail::NumberVerticesPerKey(kept, kept.positions.size(), [&](int c) { return kept.faces[c / 3][c % 3]; },
                                          sourceVertex);
+            detail::FacesAroundVertices(kept, vertexFaceOffset, vertexFaces);
+        }
     } else {
         s.splitVertices = detail::SplitVerticesPerFan(kept, sourceVertex);
+        detail::FacesAroundVertices(kept, vertexFaceOffset, vertexFaces);
     }
-
-    std::vector<int> vertexOfCorner, vertexFaceOffset, vertexFaces;
-    vertexOfCorner.reserve(kept.faces.size() * 3);
-    for (const auto &t : kept.faces)
-        for (int v : t) vertexOfCorner.push_back(v);
-    detail::BuildOffsets(vertexOfCorner, int(kept.positions.size()), vertexFaceOffset, vertexFaces);
-    for (int &corner : vertexFaces) corner /= 3;  // corner index -> face index
     s.positions = std::move(kept.positions);
     s.sourceVertex = std::move(sourceVertex);
     s.faces = std::move(kept.faces);
