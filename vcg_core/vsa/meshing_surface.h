@@ -187,14 +187,6 @@ inline void FacesAroundVertices(const IndexedMesh &m, std::vector<int> &offset, 
         m.VertexCount(), offset, faces);
 }
 
-/// Whether every vertex has a face, from FacesAroundVertices' offsets.
-inline bool EveryVertexUsed(const std::vector<int> &offset)
-{
-    for (size_t v = 0; v + 1 < offset.size(); ++v)
-        if (offset[v] == offset[v + 1]) return false;
-    return true;
-}
-
 /// Gives every fan of faces around a vertex of `m` (linked) its own vertex, so that each vertex
 /// has one fan (a disc, or a half-disc on the border). Corners are joined across linked edges.
 /// `sourceVertex` gets each vertex's vertex of `m` before; returns how many vertices it added.
@@ -857,21 +849,16 @@ inline bool BuildSurfaceTopology(const IndexedMesh &im, MeshingSurface &s, std::
     }
     error = MeshingRefusal(diag);
     if (!error.empty()) return false;
+    // With one fan per vertex and every vertex used, SplitVerticesPerFan would keep every
+    // number: a snapshot like that skips its serial pass over the corners.
     std::vector<int> sourceVertex, vertexFaceOffset, vertexFaces;
-    if (linked && diag.nonManifoldVertices == 0) {
-        // Every vertex used keeps its number (NumberVerticesPerKey), so a snapshot whose vertices
-        // are all used needs no serial pass over its corners.
-        detail::FacesAroundVertices(kept, vertexFaceOffset, vertexFaces);
-        if (detail::EveryVertexUsed(vertexFaceOffset)) {
-            sourceVertex.resize(kept.positions.size());
-            ForEachChunk(sourceVertex.size(), [&](int, size_t begin, size_t end) {
-                std::iota(sourceVertex.begin() + ptrdiff_t(begin), sourceVertex.begin() + ptrdiff_t(end), int(begin));
-            });
-        } else {
-            detail::NumberVerticesPerKey(kept, kept.positions.size(), [&](int c) { return kept.faces[c / 3][c % 3]; },
-                                         sourceVertex);
-            detail::FacesAroundVertices(kept, vertexFaceOffset, vertexFaces);
-        }
+    if (linked && diag.nonManifoldVertices == 0) detail::FacesAroundVertices(kept, vertexFaceOffset, vertexFaces);
+    const bool everyVertexUsed = !vertexFaceOffset.empty() &&  // no two equal offsets: no empty list
+                                 std::adjacent_find(vertexFaceOffset.begin(), vertexFaceOffset.end()) ==
+                                     vertexFaceOffset.end();
+    if (everyVertexUsed) {
+        sourceVertex.resize(kept.positions.size());
+        std::iota(sourceVertex.begin(), sourceVertex.end(), 0);
     } else {
         s.splitVertices = detail::SplitVerticesPerFan(kept, sourceVertex);
         detail::FacesAroundVertices(kept, vertexFaceOffset, vertexFaces);
