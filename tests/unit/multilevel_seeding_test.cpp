@@ -110,10 +110,17 @@ TEST(MultilevelSeeding, PatchGraphSumsItsFacesExactly)
     RegionState patches;
     SeedRandom random(7);
     SeedRandomly(im, metric, g, patches, PatchesGoal(im.FaceCount() / 20), random, ws);
-    const std::vector<int> patchOf = patches.partition.faceRegion;
     const PatchGraph<L2Metric> graph = BuildPatchGraph<L2Metric>(im, metric, patches.partition);
     ASSERT_EQ(graph.FaceCount(), im.FaceCount() / 20);
-    EXPECT_EQ(graph.patchOf, patchOf);
+    // The same patches, numbered by their first faces; `drawn` lists them in their order before.
+    const std::vector<int> &patchOf = graph.patchOf;
+    int firstUnseen = 0;
+    for (int f = 0; f < im.FaceCount(); ++f) {
+        ASSERT_EQ(patchOf[f], graph.drawn[patches.partition.faceRegion[f]]) << f;
+        ASSERT_LE(patchOf[f], firstUnseen) << f;
+        if (patchOf[f] == firstUnseen) ++firstUnseen;
+    }
+    EXPECT_EQ(firstUnseen, graph.FaceCount());
     const PatchMetric<L2Metric> patchMetric(metric, graph, g.maxArea);
     ExpectGraphSumsItsFaces(im, metric, g.maxArea, graph, patchMetric, patchOf, "patch");
 

@@ -91,6 +91,10 @@ struct IndexedMesh
     int VertexCount() const { return int(positions.size()); }
 };
 
+/// The node that comes i-th where seeding draws among a graph's nodes at random: a mesh's
+/// faces by index (see also the patch graph's).
+inline int DrawnNode(const IndexedMesh &, size_t i) { return int(i); }
+
 /// Whether the three coordinates of p are finite.
 inline bool IsFinite(const Point3d &p) { return std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]); }
 

@@ -41,6 +41,9 @@ struct AdjacencyLists
 
 /// Faces grouped into connected patches: a face graph (see PartitionWorkspace) whose nodes,
 /// counted by FaceCount(), are the patches, adjacent where two of their faces share an edge.
+/// Patches are numbered in the order of their first faces, so that on a mesh in space order
+/// (OrderFacesInSpace) a patch's neighbours are near it in memory and in the flood's blocks;
+/// `drawn` keeps the order they came in, the one seeding draws them in (DrawnNode).
 template <class Metric>
 struct PatchGraph
 {
@@ -52,20 +55,57 @@ struct PatchGraph
     /// Per patch, only centroid and normal: the plane FitFace falls back on when the patch's
     /// moments admit no fit (zero area, or normals that cancel out).
     FaceGeometry geometry;
+    std::vector<int> drawn;  ///< the patches, in the order of the partition they were made from
 
     int FaceCount() const { return int(moments.size()); }
 };
 
+/// The node that comes i-th where seeding draws among a graph's nodes at random: a patch
+/// graph's patches in the order they were drawn, so that its draws, and so its partitions,
+/// do not depend on how the patches are numbered.
+template <class Metric>
+int DrawnNode(const PatchGraph<Metric> &graph, size_t i)
+{
+    return graph.drawn[i];
+}
+
+namespace detail {
+
+/// Renumbers the regions of `patches` in the order of their first faces; returns, per new
+/// number, the region's number before.
+inline std::vector<int> NumberInFaceOrder(Partition &patches)
+{
+    const size_t count = patches.proxies.size();
+    std::vector<int> number(count, -1), before(count);
+    std::vector<Proxy> proxies(count);
+    int next = 0;
+    for (int &p : patches.faceRegion) {
+        if (number[size_t(p)] < 0) {
+            before[size_t(next)] = p;
+            proxies[size_t(next)] = patches.proxies[size_t(p)];
+            number[size_t(p)] = next++;
+        }
+        p = number[size_t(p)];
+    }
+    patches.proxies = std::move(proxies);
+    return before;
+}
+
+}  // namespace detail
+
 /// The patch graph of `patches`, a partition of `mesh` into connected regions (as a flood
-/// leaves them); each patch's moments are taken about its proxy's point, and its proxy's
-/// plane is its fallback. `mesh` is any face graph (see PartitionWorkspace) and `metric` a
-/// metric on its nodes whose moments are Metric's: the faces, or the patches of a finer graph
-/// (PatchMetric), so that patches can be grouped again.
+/// leaves them), each a patch; each patch's moments are taken about its proxy's point, and
+/// its proxy's plane is its fallback. `mesh` is any face graph (see PartitionWorkspace) and
+/// `metric` a metric on its nodes whose moments are Metric's: the faces, or the patches of a
+/// finer graph (PatchMetric), so that patches can be grouped again.
 template <class Metric, class Graph, class NodeMetric>
 PatchGraph<Metric> BuildPatchGraph(const Graph &mesh, const NodeMetric &metric, Partition patches)
 {
     PatchGraph<Metric> graph;
     const int patchCount = int(patches.proxies.size());
+    const std::vector<int> before = detail::NumberInFaceOrder(patches);
+    graph.drawn.resize(size_t(patchCount));
+    for (int p = 0; p < patchCount; ++p) graph.drawn[size_t(before[size_t(p)])] = p;
     graph.patchOf = std::move(patches.faceRegion);
     graph.geometry.centroid.resize(patchCount);
     graph.geometry.normal.resize(patchCount);

@@ -248,8 +248,14 @@ void PickOnePerComponent(const Graph &mesh, const Metric &metric, const FaceGeom
                          SeedRandom &random)
 {
     const int faceCount = mesh.FaceCount();
-    std::vector<int> offset, facesOf;  // the faces of each component, ascending
-    BuildOffsets(mesh.component, mesh.componentCount, offset, facesOf);
+    std::vector<int> offset, facesOf;  // the faces of each component, in draw order
+    BuildLists(
+        size_t(faceCount),
+        [&](size_t i, auto &&add) {
+            const int f = DrawnNode(mesh, i);
+            add(mesh.component[f], f);
+        },
+        mesh.componentCount, offset, facesOf);
     s.seeds.resize(mesh.componentCount);
     s.partition.proxies.resize(mesh.componentCount);
     for (int c = 0; c < mesh.componentCount; ++c) {
@@ -271,12 +277,15 @@ void StartOnePerComponent(const Graph &mesh, const Metric &metric, const FaceGeo
     MeasureRegions(metric, s);
 }
 
-/// Adds `count` proxies at distinct random non-seed faces, each with its face's proxy. The
-/// labels are left stale: the caller floods next.
-template <class Metric>
-void AddRandomSeeds(const Metric &metric, const FaceGeometry &g, RegionState &s, int count, SeedRandom &random)
+/// Adds `count` proxies at distinct random non-seed faces of `mesh`, each with its face's
+/// proxy. The labels are left stale: the caller floods next.
+template <class Graph, class Metric>
+void AddRandomSeeds(const Graph &mesh, const Metric &metric, const FaceGeometry &g, RegionState &s, int count,
+                    SeedRandom &random)
 {
-    std::vector<int> candidates = ItemsWhere(s.faceError.size(), [&s](size_t f) { return !s.IsSeed(int(f)); });
+    std::vector<int> candidates =
+        ItemsWhere(s.faceError.size(), [&](size_t i) { return !s.IsSeed(DrawnNode(mesh, i)); });
+    for (int &i : candidates) i = DrawnNode(mesh, size_t(i));
     count = std::min(count, int(candidates.size()));
     for (int i = 0; i < count; ++i) {  // partial Fisher-Yates: the first `count` are a uniform draw
         std::swap(candidates[i], candidates[i + random.Below(uint64_t(candidates.size() - i))]);
@@ -306,14 +315,14 @@ void SeedRandomly(const IndexedMesh &mesh, const Metric &metric, const FaceGeome
             const int added = std::min(s.RegionCount(), goal.proxyCount - s.RegionCount());
             detail::StepCounts(progress, 0, 100, first, goal.proxyCount, s.RegionCount(), s.RegionCount() + added,
                                (1 + detail::kLloydItems * std::max(1, goal.relaxations)) * faces);
-            detail::AddRandomSeeds(metric, g, s, added, random);
+            detail::AddRandomSeeds(mesh, metric, g, s, added, random);
             detail::Relax(mesh, metric, s, ws, std::max(1, goal.relaxations));  // floods from the new seeds first
         }
         progress.Done();
         return;
     }
     progress.Step(0, 100, (2 + detail::kLloydItems * (1 + goal.relaxations)) * faces);
-    detail::AddRandomSeeds(metric, g, s, goal.proxyCount - s.RegionCount(), random);
+    detail::AddRandomSeeds(mesh, metric, g, s, goal.proxyCount - s.RegionCount(), random);
     FloodFromSeeds(mesh, metric, s, ws);
     MeasureRegions(metric, s);
     detail::Relax(mesh, metric, s, ws, goal.relaxations);
@@ -418,7 +427,7 @@ Partition FloodPatches(const Graph &mesh, const Metric &metric, const FaceGeomet
 {
     RegionState s;
     PickOnePerComponent(mesh, metric, g, s, random);
-    AddRandomSeeds(metric, g, s, patchCount - s.RegionCount(), random);
+    AddRandomSeeds(mesh, metric, g, s, patchCount - s.RegionCount(), random);
     FloodFromSeeds(mesh, metric, s, ws);
     return std::move(s.partition);
 }
