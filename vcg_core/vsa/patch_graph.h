@@ -71,24 +71,23 @@ int DrawnNode(const PatchGraph<Metric> &graph, size_t i)
 
 namespace detail {
 
-/// Renumbers the regions of `patches` in the order of their first faces; returns, per new
-/// number, the region's number before.
+/// Renumbers the regions of `patches` in the order of their first faces; returns, per number
+/// before, the region's new number.
 inline std::vector<int> NumberInFaceOrder(Partition &patches)
 {
     const size_t count = patches.proxies.size();
-    std::vector<int> number(count, -1), before(count);
+    std::vector<int> number(count, -1);
     std::vector<Proxy> proxies(count);
     int next = 0;
     for (int &p : patches.faceRegion) {
         if (number[size_t(p)] < 0) {
-            before[size_t(next)] = p;
             proxies[size_t(next)] = patches.proxies[size_t(p)];
             number[size_t(p)] = next++;
         }
         p = number[size_t(p)];
     }
     patches.proxies = std::move(proxies);
-    return before;
+    return number;
 }
 
 }  // namespace detail
@@ -103,9 +102,7 @@ PatchGraph<Metric> BuildPatchGraph(const Graph &mesh, const NodeMetric &metric, 
 {
     PatchGraph<Metric> graph;
     const int patchCount = int(patches.proxies.size());
-    const std::vector<int> before = detail::NumberInFaceOrder(patches);
-    graph.drawn.resize(size_t(patchCount));
-    for (int p = 0; p < patchCount; ++p) graph.drawn[size_t(before[size_t(p)])] = p;
+    graph.drawn = detail::NumberInFaceOrder(patches);
     graph.patchOf = std::move(patches.faceRegion);
     graph.geometry.centroid.resize(patchCount);
     graph.geometry.normal.resize(patchCount);

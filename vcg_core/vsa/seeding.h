@@ -283,13 +283,13 @@ template <class Graph, class Metric>
 void AddRandomSeeds(const Graph &mesh, const Metric &metric, const FaceGeometry &g, RegionState &s, int count,
                     SeedRandom &random)
 {
+    // Positions in draw order; only the drawn ones are turned into nodes.
     std::vector<int> candidates =
         ItemsWhere(s.faceError.size(), [&](size_t i) { return !s.IsSeed(DrawnNode(mesh, i)); });
-    for (int &i : candidates) i = DrawnNode(mesh, size_t(i));
     count = std::min(count, int(candidates.size()));
     for (int i = 0; i < count; ++i) {  // partial Fisher-Yates: the first `count` are a uniform draw
         std::swap(candidates[i], candidates[i + random.Below(uint64_t(candidates.size() - i))]);
-        const int f = candidates[i];
+        const int f = DrawnNode(mesh, size_t(candidates[i]));
         s.partition.proxies.push_back(FitFace(metric, g, f));
         s.seeds.push_back(f);
         s.regionEnergy.push_back(0);
