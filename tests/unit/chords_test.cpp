@@ -1,6 +1,7 @@
 // Tests of vsa/chords.h.
 #include "meshing_fixtures.h"
 #include "meshing_test_util.h"
+#include "partition_test_helpers.h"
 #include "test_meshes.h"
 
 #include <vsa/chords.h>
@@ -122,6 +123,18 @@ TEST(Chords, ChordErrorBoundKeepsTheCornersTheRegionsFit)
     EXPECT_EQ(corners2d, (std::set<std::pair<double, double>>{{0, 0}, {5, 0}, {10, 0}, {0, 1}, {5, 1}, {10, 1}}));
 }
 
+namespace {
+
+/// A flat "C" in `c` (and `im`), its inner and outer halves as two regions.
+Partition FlatCHalves(TMesh &c, IndexedMesh &im)
+{
+    vsa_test::MakeFlatC(c, 8, 60, M_PI / 3);
+    im = BuildIndexedMesh(c);
+    return vsa_test::PartitionByRule(im, 2, [&](int f) { return vsa_test::FaceCentroid(im, f).Norm() < 1.5 ? 0 : 1; });
+}
+
+}  // namespace
+
 // Two coplanar regions, the inner and outer halves of a flat "C": the paper's criterion
 // (sin 0 = 0) never splits the chain between them, whose chord then runs straight across the
 // C's opening. The gap test must split it until the output stays on the surface. Repair
@@ -129,10 +142,8 @@ TEST(Chords, ChordErrorBoundKeepsTheCornersTheRegionsFit)
 TEST(Chords, ChordAcrossAGapIsSplit)
 {
     TMesh c;
-    vsa_test::MakeFlatC(c, 8, 60, M_PI / 3);
-    const IndexedMesh im = BuildIndexedMesh(c);
-    const Partition halves = vsa_test::PartitionByRule(
-        im, 2, [&](int f) { return vsa_test::FaceCentroid(im, f).Norm() < 1.5 ? 0 : 1; });
+    IndexedMesh im;
+    const Partition halves = FlatCHalves(c, im);
     auto farthestFromInput = [&](const MeshingRun &run) {
         std::vector<Point3d> samples;  // the output's vertices and face centroids
         for (const auto &t : run.output.faces) {
@@ -159,6 +170,34 @@ TEST(Chords, ChordAcrossAGapIsSplit)
     // Chords of the outer arc still bulge into the band by their sagitta; none crosses a gap.
     EXPECT_LT(farthestFromInput(with), 0.15);
     EXPECT_EQ(with.report.validity.selfIntersections, 0);
+}
+
+// The chains are subdivided on the threads, and those that need the gap test's grid wait for
+// it to be built: the flat C's output must be the same on any number of threads.
+TEST(Chords, ChordAcrossAGapIsSplitAlikeOnAnyNumberOfThreads)
+{
+    TMesh c;
+    IndexedMesh im;
+    const Partition halves = FlatCHalves(c, im);
+    MeshingParam param;
+    param.repairRounds = 0;
+    const auto meshOn = [&](int threads, MeshingRun &run) {
+        WithThreads(threads, [&] { return Mesh(c, halves, param, run), 0; });
+    };
+    MeshingRun one, without;
+    meshOn(1, one);
+    ExpectValidWithInputTopology(one);
+    param.chordGapThreshold = 0;
+    meshOn(1, without);
+    param.chordGapThreshold = MeshingParam().chordGapThreshold;
+    EXPECT_GT(one.report.chordAnchors, without.report.chordAnchors);  // the gap test split chains
+    for (int threads : {2, 3}) {
+        MeshingRun several;
+        meshOn(threads, several);
+        EXPECT_EQ(several.report.chordAnchors, one.report.chordAnchors) << threads;
+        EXPECT_EQ(several.output.positions, one.output.positions) << threads;
+        EXPECT_EQ(several.output.faces, one.output.faces) << threads;
+    }
 }
 
 // Repair passes reuse the chord subdivision of the chains they did not change: the anchors

@@ -170,7 +170,9 @@ inline AnchorSet SelectAnchors(const MeshingSurface &s, detail::ChainSubdivision
     }
 
     for (bool changed = true; changed;) {
-        for (const detail::ChainRun &chain : detail::CanonicalChains(s, isAnchor)) {
+        const std::vector<detail::ChainRun> chains = detail::CanonicalChains(s, isAnchor);
+        subdivision.SubdivideNew(chains);
+        for (const detail::ChainRun &chain : chains) {
             const std::vector<int> &splits = subdivision.Splits(chain);
             for (int split : splits) isAnchor[s.cellLoop[chain.cell][split % int(s.cellLoop[chain.cell].size())]] = 1;
             result.chordSplits += int(splits.size());

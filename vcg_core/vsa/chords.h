@@ -17,6 +17,7 @@
 #include <limits>
 #include <map>
 #include <memory>
+#include <optional>
 #include <utility>
 #include <vector>
 
@@ -106,14 +107,29 @@ public:
     {
     }
 
-    /// `chainDeviation`: the farthest distance of the chain's vertices from the chord a-b.
-    bool Strays(const Point3d &a, const Point3d &b, double chainDeviation)
+    /// Whether Strays(a, b, chainDeviation) queries the grid. When it does not, the chain runs
+    /// from a to b within chainDeviation of the chord, so every point of the chord has a chain
+    /// point, on the surface, at most that far.
+    bool Queries(const Point3d &a, const Point3d &b, double chainDeviation) const
     {
+        return chainDeviation > threshold_ * (b - a).Norm();
+    }
+
+    /// Whether the grid is there, borrowed or built: Strays then only reads, on any thread.
+    bool HasGrid() const { return borrowed_ || surface_; }
+
+    /// Builds the grid now, if it is not there (most meshings never need it).
+    void BuildGrid()
+    {
+        if (!HasGrid()) surface_ = std::make_unique<SurfaceGrid>(positions_, faces_);
+    }
+
+    /// `chainDeviation`: the farthest distance of the chain's vertices from the chord a-b. Needs
+    /// the grid when it Queries.
+    bool Strays(const Point3d &a, const Point3d &b, double chainDeviation) const
+    {
+        if (!Queries(a, b, chainDeviation)) return false;
         const double allowed = threshold_ * (b - a).Norm();
-        // The chain runs from a to b within chainDeviation of the chord, so every point of the
-        // chord has a chain point, on the surface, at most that far: no query needed.
-        if (!(chainDeviation > allowed)) return false;
-        if (!borrowed_ && !surface_) surface_ = std::make_unique<SurfaceGrid>(positions_, faces_);  // most meshings never get here
         const SurfaceGrid &grid = borrowed_ ? *borrowed_ : *surface_;
         for (int i = 1; i < kChordGapSamples; ++i)
             if (!grid.HasFaceWithin(a + (b - a) * (double(i) / kChordGapSamples), allowed)) return true;
@@ -185,12 +201,36 @@ public:
     {
     }
 
-    /// Loop positions (of chain.cell's loop, within (chain.from, chain.to)) that get anchors.
-    const std::vector<int> &Splits(const ChainRun &chain)
+    /// Loop positions (of chain.cell's loop, within (chain.from, chain.to)) that get anchors,
+    /// once SubdivideNew has seen the chain.
+    const std::vector<int> &Splits(const ChainRun &chain) const { return splits_.at(Key(chain)); }
+
+    /// Subdivides those of `chains` not subdivided yet, on every thread. The threads never
+    /// build the gap test's grid: the chains that need it wait until it is built, on every
+    /// thread, and are subdivided then.
+    void SubdivideNew(const std::vector<ChainRun> &chains)
     {
-        const auto [it, added] = splits_.try_emplace({chain.cell, chain.from, chain.to});
-        if (added) it->second = Subdivide(chain);
-        return it->second;
+        std::vector<const ChainRun *> fresh;
+        for (const ChainRun &chain : chains)
+            if (!splits_.count(Key(chain))) fresh.push_back(&chain);
+        std::vector<std::optional<std::vector<int>>> found(fresh.size());
+        const auto subdivideAll = [&](const std::vector<int> &which) {
+            size_t vertices = 0;
+            for (int k : which) vertices += size_t(fresh[k]->to - fresh[k]->from);
+            ForEachGroup(
+                int(which.size()), vertices, [&](int i) { return size_t(fresh[which[i]]->to - fresh[which[i]]->from); },
+                [&](int i) { found[which[i]] = Subdivide(*fresh[which[i]]); });
+        };
+        std::vector<int> all(fresh.size()), waiting;
+        for (size_t k = 0; k < fresh.size(); ++k) all[k] = int(k);
+        subdivideAll(all);
+        for (size_t k = 0; k < fresh.size(); ++k)
+            if (!found[k]) waiting.push_back(int(k));
+        if (!waiting.empty()) {
+            gap_->BuildGrid();
+            subdivideAll(waiting);
+        }
+        for (size_t k = 0; k < fresh.size(); ++k) splits_.emplace(Key(*fresh[k]), std::move(*found[k]));
     }
 
 private:
@@ -201,7 +241,10 @@ private:
     ChordGapTest *gap_;
     std::map<std::array<int, 3>, std::vector<int>> splits_;  ///< by (cell, from, to)
 
-    std::vector<int> Subdivide(const ChainRun &chain) const
+    static std::array<int, 3> Key(const ChainRun &chain) { return {chain.cell, chain.from, chain.to}; }
+
+    /// The chain's splits, or nothing when it needs the gap test's grid and the grid is not there.
+    std::optional<std::vector<int>> Subdivide(const ChainRun &chain) const
     {
         const std::vector<int> &loop = s_.cellLoop[chain.cell];
         const int m = int(loop.size());
@@ -217,9 +260,11 @@ private:
             const Point3d &a = s_.positions[loop[from % m]], &b = s_.positions[loop[to % m]];
             const bool closedChain = loop[to % m] == loop[from % m];
             const double deviation = distance * weight;
-            if (!closedChain && !(deviation > threshold_ * (b - a).Norm()) && !(deviation > maxDeviation_) &&
-                !(gap_ && gap_->Strays(a, b, distance)))
-                continue;
+            if (!closedChain && !(deviation > threshold_ * (b - a).Norm()) && !(deviation > maxDeviation_)) {
+                if (!gap_) continue;
+                if (!gap_->HasGrid() && gap_->Queries(a, b, distance)) return std::nullopt;
+                if (!gap_->Strays(a, b, distance)) continue;
+            }
             splits.push_back(split);
             stack.push_back({split, to});
             stack.push_back({from, split});
