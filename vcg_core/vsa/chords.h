@@ -214,21 +214,10 @@ public:
         for (const ChainRun &chain : chains)
             if (!splits_.count(Key(chain))) fresh.push_back(&chain);
         std::vector<std::optional<std::vector<int>>> found(fresh.size());
-        const auto subdivideAll = [&](const std::vector<int> &which) {
-            size_t vertices = 0;
-            for (int k : which) vertices += size_t(fresh[k]->to - fresh[k]->from);
-            ForEachGroup(
-                int(which.size()), vertices, [&](int i) { return size_t(fresh[which[i]]->to - fresh[which[i]]->from); },
-                [&](int i) { found[which[i]] = Subdivide(*fresh[which[i]]); });
-        };
-        std::vector<int> all(fresh.size()), waiting;
-        for (size_t k = 0; k < fresh.size(); ++k) all[k] = int(k);
-        subdivideAll(all);
-        for (size_t k = 0; k < fresh.size(); ++k)
-            if (!found[k]) waiting.push_back(int(k));
-        if (!waiting.empty()) {
+        SubdivideUnfound(fresh, found);
+        if (std::any_of(found.begin(), found.end(), [](const auto &splits) { return !splits; })) {
             gap_->BuildGrid();
-            subdivideAll(waiting);
+            SubdivideUnfound(fresh, found);
         }
         for (size_t k = 0; k < fresh.size(); ++k) splits_.emplace(Key(*fresh[k]), std::move(*found[k]));
     }
@@ -242,6 +231,18 @@ private:
     std::map<std::array<int, 3>, std::vector<int>> splits_;  ///< by (cell, from, to)
 
     static std::array<int, 3> Key(const ChainRun &chain) { return {chain.cell, chain.from, chain.to}; }
+
+    /// Subdivides, on every thread, the chains of `chains` that have no splits in `found` yet.
+    void SubdivideUnfound(const std::vector<const ChainRun *> &chains,
+                          std::vector<std::optional<std::vector<int>>> &found) const
+    {
+        const auto length = [&](int k) { return size_t(chains[k]->to - chains[k]->from); };
+        size_t vertices = 0;
+        for (size_t k = 0; k < chains.size(); ++k) vertices += found[k] ? 0 : length(int(k));
+        ForEachGroup(int(chains.size()), vertices, length, [&](int k) {
+            if (!found[k]) found[k] = Subdivide(*chains[k]);
+        });
+    }
 
     /// The chain's splits, or nothing when it needs the gap test's grid and the grid is not there.
     std::optional<std::vector<int>> Subdivide(const ChainRun &chain) const
