@@ -248,9 +248,10 @@ TEST(MeshablePartition, TrialsInTurnJudgeAsTrialsAfresh)
     EXPECT_GT(kept, 0);
 }
 
-/// The meshing starts from the last trial's surface and floodings, which must be labelled with
-/// the final partition and give the output a surface built afresh gives; a surface labelled
-/// otherwise is not used, nor floodings of another surface.
+/// The meshing starts from the last trial's surface, its grid and floodings, which must be
+/// labelled with the final partition and give the output a surface built afresh gives; a
+/// surface labelled otherwise is not used, nor its grid (whose faces may go with it), nor
+/// floodings of another surface.
 TEST(MeshablePartition, MeshingFromTheLastTrialIsTheSame)
 {
     const std::unique_ptr<Approximation> box = PartitionedBoxWithHole(4);
@@ -267,21 +268,31 @@ TEST(MeshablePartition, MeshingFromTheLastTrialIsTheSame)
     const int regionCount = int(partition.proxies.size());
     EXPECT_TRUE(IsLabelledAs(*start.surface, partition.faceRegion, regionCount));
     ASSERT_TRUE(start.checked);
-    MeshingStart mislabelled{std::make_shared<MeshingSurface>(*start.surface), start.flooding, start.checked};
+    ASSERT_TRUE(start.grid);
+    const MeshingSurface &s = *start.surface;
+    const int last = s.FaceCount() - 1;  // the grid is of the surface's faces: each nearest to its centroid
+    for (int f : {0, last})
+        EXPECT_EQ(start.grid->NearestFace((s.positions[s.faces[f][0]] + s.positions[s.faces[f][1]] +
+                                           s.positions[s.faces[f][2]]) / 3.0),
+                  f);
+    MeshingStart mislabelled{std::make_shared<MeshingSurface>(*start.surface), start.flooding, start.checked,
+                             start.grid};
     mislabelled.surface->faceRegion.back() = (mislabelled.surface->faceRegion.back() + 1) % regionCount;
     EXPECT_FALSE(IsLabelledAs(*mislabelled.surface, partition.faceRegion, regionCount));
-    MeshingStart otherSurface{std::make_shared<MeshingSurface>(*start.surface), start.flooding, start.checked};
+    MeshingStart otherSurface{std::make_shared<MeshingSurface>(*start.surface), start.flooding, start.checked,
+                              start.grid};
     detail::CheckedPass doubled = *start.checked;
     doubled.clearance *= 2;
-    MeshingStart otherClearance{start.surface, start.flooding, doubled};
+    MeshingStart otherClearance{start.surface, start.flooding, doubled, start.grid};
 
     TMesh fresh, started, notUsed, notFlooded, notChecked;
     const IndexedMesh &mesh = approximation.Mesh();
     ASSERT_TRUE(BuildApproximatingMesh(mesh, partition, meshing, fresh).ok);
     ASSERT_TRUE(BuildApproximatingMesh(mesh, partition, meshing, started, nullptr, std::move(start)).ok);
-    ASSERT_TRUE(BuildApproximatingMesh(mesh, partition, meshing, notUsed, nullptr, std::move(mislabelled)).ok);
     ASSERT_TRUE(BuildApproximatingMesh(mesh, partition, meshing, notFlooded, nullptr, std::move(otherSurface)).ok);
     ASSERT_TRUE(BuildApproximatingMesh(mesh, partition, meshing, notChecked, nullptr, std::move(otherClearance)).ok);
+    // Last: the surface it drops is then the last to hold the faces its grid is of.
+    ASSERT_TRUE(BuildApproximatingMesh(mesh, partition, meshing, notUsed, nullptr, std::move(mislabelled)).ok);
     const IndexedMesh expected = BuildIndexedMesh(fresh);
     for (const TMesh *out : {&started, &notUsed, &notFlooded, &notChecked}) {
         const IndexedMesh got = BuildIndexedMesh(*out);

@@ -125,7 +125,7 @@ struct TrialSetup
         meshable = BuildSurfaceTopology(in, *surfaces[0], error);
         if (!meshable) return;
         const MeshingSurface &s = *surfaces[0];
-        grid = std::make_unique<SurfaceGrid>(s.positions, s.faces);
+        grid = std::make_shared<const SurfaceGrid>(s.positions, s.faces);
         gapTest = std::make_unique<ChordGapTest>(s.positions, s.faces, once.chordGapThreshold, grid.get());
     }
     TrialSetup(const TrialSetup &) = delete;  // grid, gapTest and latest refer to the surfaces
@@ -139,7 +139,9 @@ struct TrialSetup
     /// can be handed to the meshing with the floodings that refer to it (see MeshingStart).
     std::array<std::shared_ptr<MeshingSurface>, 2> surfaces;
     bool meshable = false;  ///< false: the meshing refuses the input, and says why
-    std::unique_ptr<SurfaceGrid> grid;     ///< of the surfaces' faces (the same in both)
+    /// Of the surfaces' faces (the same arrays in both): handed to the meshing with the last
+    /// surface, whose gap test needs the same grid.
+    std::shared_ptr<const SurfaceGrid> grid;
     std::unique_ptr<ChordGapTest> gapTest;
     std::array<std::vector<Proxy>, 2> proxies;  ///< UsableProxies of each surface's regions
     std::unique_ptr<CellMesher<CoordType>> latest;
@@ -415,14 +417,14 @@ inline void CheckMeshablePartitionParam(const MeshablePartitionParam &param)
 /// passes, k' reaches its cap, or the rounds run out.
 ///
 /// `start`, if given, receives the last trial's surface, labelled with the final partition,
-/// its cells' floodings and its checked pass, for BuildApproximatingMesh to start from (no
-/// surface when there was no trial).
+/// its faces' grid, its cells' floodings and its checked pass, for BuildApproximatingMesh to
+/// start from (no surface when there was no trial).
 template <class CoordType>
 MeshablePartitionReport MakePartitionMeshable(Approximation &approximation, const MeshingParam &meshing,
                                               const MeshablePartitionParam &param, vcg::CallBackPos *cb = nullptr,
                                               MeshingStart *start = nullptr)
 {
-    if (start) start->surface.reset(), start->flooding.reset();
+    if (start) start->surface.reset(), start->flooding.reset(), start->grid.reset();
     MeshablePartitionReport report;
     report.proxiesRequested = report.proxiesFinal = approximation.ProxyCount();
     CheckMeshablePartitionParam(param);
@@ -465,6 +467,7 @@ MeshablePartitionReport MakePartitionMeshable(Approximation &approximation, cons
     report.proxiesFinal = approximation.ProxyCount();
     if (start && input.latest) {
         start->surface = input.surfaces[input.latestSurface];
+        start->grid = input.grid;
         start->flooding.emplace(std::move(input.latest->Flooding()));
         start->checked = detail::CheckedPass{input.latest->Best().pass, std::move(input.defects), input.clearance};
     }

@@ -10,6 +10,7 @@
 #include <vsa/meshing_repair.h>
 #include <vsa/progress.h>
 #include <vsa/proxy.h>
+#include <vsa/surface_grid.h>
 #include <vsa/tuning.h>
 
 #include <vcg/complex/algorithms/update/bounding.h>
@@ -62,13 +63,15 @@ public:
 
     /// `clearance`: SavedCoordinateClearance of the output's scalar. Halving changes cells only,
     /// not faces or regions: the planes, the regions' fits and the gap test's grid of
-    /// the first surface serve every surface split from it.
-    SurfaceMeshing(const IndexedMesh &in, std::shared_ptr<MeshingSurface> surface, const std::vector<Proxy> &given,
+    /// the first surface serve every surface split from it. `grid`: a grid of the surface's
+    /// faces for the gap test to borrow, or nullptr to build one when needed.
+    SurfaceMeshing(const IndexedMesh &in, std::shared_ptr<MeshingSurface> surface,
+                   std::shared_ptr<const SurfaceGrid> grid, const std::vector<Proxy> &given,
                    const MeshingParam &param, double clearance, MeshingReport &report, ProgressStage &progress)
         : param_(param), report_(report), progress_(progress), inputIntersections_(in), clearance_(clearance),
           surface_(std::move(surface)), proxies_(UsableProxies(*surface_, given)),
-          fits_(MeasureRegionFits(*surface_, proxies_)),
-          gapTest_(surface_->positions, surface_->faces, param.chordGapThreshold), bestSurface_(surface_)
+          fits_(MeasureRegionFits(*surface_, proxies_)), grid_(std::move(grid)),
+          gapTest_(surface_->positions, surface_->faces, param.chordGapThreshold, grid_.get()), bestSurface_(surface_)
     {
     }
 
@@ -187,6 +190,7 @@ private:
     std::shared_ptr<MeshingSurface> surface_;  ///< the first surface: gapTest_ points into it
     std::vector<Proxy> proxies_;
     RegionFits fits_;
+    std::shared_ptr<const SurfaceGrid> grid_;  ///< borrowed by gapTest_, if given
     ChordGapTest gapTest_;
     std::shared_ptr<MeshingSurface> bestSurface_;
     std::unique_ptr<Mesher> best_;  ///< the mesher of bestSurface_
@@ -293,6 +297,9 @@ struct MeshingStart
     std::shared_ptr<MeshingSurface> surface;
     std::optional<CellFlooding> flooding;  ///< of `surface`'s cells, if known
     std::optional<detail::CheckedPass> checked;  ///< a pass on `surface`, if known
+    /// A grid of `surface`'s faces (SurfaceGrid(positions, faces)), if built: the chord gap
+    /// test borrows it rather than building its own.
+    std::shared_ptr<const SurfaceGrid> grid;
 };
 
 /// Builds the approximating mesh of a partitioned mesh into `out` (cleared first).
@@ -325,6 +332,7 @@ MeshingReport BuildApproximatingMesh(const IndexedMesh &in, const Partition &par
     std::shared_ptr<MeshingSurface> surface = std::move(start.surface);
     if (!surface || !IsLabelledAs(*surface, partition.faceRegion, regionCount)) {
         start.checked.reset();
+        start.grid.reset();
         surface = std::make_shared<MeshingSurface>();
         if (!BuildMeshingSurface(in, partition.faceRegion, regionCount, *surface, report.error)) return report;
     }
@@ -335,8 +343,9 @@ MeshingReport BuildApproximatingMesh(const IndexedMesh &in, const Partition &par
     for (int r : surface->cellRegion) ++regionCells[r];
 
     const double clearance = detail::SavedCoordinateClearance<typename OutMeshType::ScalarType>(in.positions);
-    detail::SurfaceMeshing<typename OutMeshType::CoordType> meshing(in, surface, partition.proxies, param, clearance,
-                                                                   report, progress);
+    detail::SurfaceMeshing<typename OutMeshType::CoordType> meshing(in, surface, std::move(start.grid),
+                                                                   partition.proxies, param, clearance, report,
+                                                                   progress);
     meshing.Repair(std::move(start.flooding), start.checked ? &*start.checked : nullptr);
     meshing.Halve();
     const double faceBudget = param.maxInputFacesGrowth * double(meshing.Best().pass.triangles.size());
