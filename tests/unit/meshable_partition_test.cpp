@@ -269,6 +269,8 @@ TEST(MeshablePartition, MeshingFromTheLastTrialIsTheSame)
     EXPECT_TRUE(IsLabelledAs(*start.surface, partition.faceRegion, regionCount));
     ASSERT_TRUE(start.checked);
     ASSERT_TRUE(start.grid);
+    ASSERT_TRUE(start.intersections);
+    EXPECT_EQ(&start.intersections->Input(), &approximation.Mesh());
     const MeshingSurface &s = *start.surface;
     const int last = s.FaceCount() - 1;  // the grid is of the surface's faces: each nearest to its centroid
     for (int f : {0, last})
@@ -276,14 +278,14 @@ TEST(MeshablePartition, MeshingFromTheLastTrialIsTheSame)
                                            s.positions[s.faces[f][2]]) / 3.0),
                   f);
     MeshingStart mislabelled{std::make_shared<MeshingSurface>(*start.surface), start.flooding, start.checked,
-                             start.grid};
+                             start.grid, start.intersections};
     mislabelled.surface->faceRegion.back() = (mislabelled.surface->faceRegion.back() + 1) % regionCount;
     EXPECT_FALSE(IsLabelledAs(*mislabelled.surface, partition.faceRegion, regionCount));
     MeshingStart otherSurface{std::make_shared<MeshingSurface>(*start.surface), start.flooding, start.checked,
-                              start.grid};
+                              start.grid, start.intersections};
     detail::CheckedPass doubled = *start.checked;
     doubled.clearance *= 2;
-    MeshingStart otherClearance{start.surface, start.flooding, doubled, start.grid};
+    MeshingStart otherClearance{start.surface, start.flooding, doubled, start.grid, start.intersections};
 
     TMesh fresh, started, notUsed, notFlooded, notChecked;
     const IndexedMesh &mesh = approximation.Mesh();

@@ -12,6 +12,7 @@
 #include <cmath>
 #include <functional>
 #include <limits>
+#include <memory>
 #include <numeric>
 #include <set>
 #include <string>
@@ -62,31 +63,43 @@ TEST(MeshingRepair, CarvingSeedsAreWhereTheCellPassesNearestToTheFaceItMeets)
     EXPECT_EQ(s.faceCell[ringOnly[0]], ring);
 }
 
-// Keeping a cell's input faces cannot undo an intersection that is in the input: two
-// overlapping cubes, one region per side, keep their 12 sides as meshed polygons, their
-// intersections reported.
-TEST(MeshingRepair, IntersectionsOfTheInputItselfAreNotRepairedWithInputFaces)
+/// Builds in `cubes` two unit cubes of 12 faces each, the second shifted by `shift` along the
+/// diagonal: they overlap for a shift below 1.
+void BuildTwoCubes(TMesh &cubes, float shift)
 {
     TMesh cube;
     vsa_test::MakeTessellatedCube(cube, 1);
     std::vector<vcg::Point3f> coords;
     std::vector<vcg::Point3i> tris;
-    for (const vcg::Point3f &shift : {vcg::Point3f(0, 0, 0), vcg::Point3f(1, 1, 1)}) {
+    for (const vcg::Point3f &offset : {vcg::Point3f(0, 0, 0), vcg::Point3f(shift, shift, shift)}) {
         const int first = int(coords.size());
-        for (const auto &v : cube.vert) coords.push_back(v.cP() + shift);
+        for (const auto &v : cube.vert) coords.push_back(v.cP() + offset);
         for (const auto &f : cube.face)
             tris.emplace_back(first + vcg::tri::Index(cube, f.cV(0)), first + vcg::tri::Index(cube, f.cV(1)),
                               first + vcg::tri::Index(cube, f.cV(2)));
     }
-    TMesh cubes;
     vsa_test::BuildFromLists(cubes, coords, tris);
+}
+
+/// One region per side of each of the two cubes of TwoCubes.
+Partition SidesOfTwoCubes(const IndexedMesh &im)
+{
+    return vsa_test::PartitionByRule(im, 12, [&](int f) {
+        return vsa_test::DominantAxisLabel(vsa_test::FaceNormal(im, f)) + (f < im.FaceCount() / 2 ? 0 : 6);
+    });
+}
+
+// Keeping a cell's input faces cannot undo an intersection that is in the input: two
+// overlapping cubes, one region per side, keep their 12 sides as meshed polygons, their
+// intersections reported.
+TEST(MeshingRepair, IntersectionsOfTheInputItselfAreNotRepairedWithInputFaces)
+{
+    TMesh cubes;
+    BuildTwoCubes(cubes, 1);
     const IndexedMesh im = BuildIndexedMesh(cubes);
     ASSERT_GT(detail::SelfIntersectingPairs(im).size(), 0u);
-    const Partition partition = vsa_test::PartitionByRule(im, 12, [&](int f) {
-        return vsa_test::DominantAxisLabel(vsa_test::FaceNormal(im, f)) + (f < cube.FN() ? 0 : 6);
-    });
     MeshingRun run;
-    Mesh(cubes, partition, MeshingParam(), run);
+    Mesh(cubes, SidesOfTwoCubes(im), MeshingParam(), run);
     ExpectValidWithInputTopology(run);
     EXPECT_EQ(run.out.FN(), 24);
     EXPECT_GT(run.report.validity.selfIntersections, 0);
@@ -95,4 +108,38 @@ TEST(MeshingRepair, IntersectionsOfTheInputItselfAreNotRepairedWithInputFaces)
     // halving of cells.
     EXPECT_EQ(run.report.passes, 2);
     EXPECT_EQ(run.report.outputHalvingRound, 0);
+}
+
+// What one meshing found of where its input intersects itself serves the next meshing of the
+// same input, which comes out the same; found on another input (the same cubes apart, which do
+// not meet), it is not used: taken for the overlapping cubes', it would have their meshing try
+// to halve the cells where the input meets itself, in vain.
+TEST(MeshingRepair, InputIntersectionsServeOnlyMeshingsOfTheirInput)
+{
+    TMesh overlapping, apart;
+    BuildTwoCubes(overlapping, 1);
+    BuildTwoCubes(apart, 3);
+    const IndexedMesh im = BuildIndexedMesh(overlapping), other = BuildIndexedMesh(apart);
+    ASSERT_EQ(other.FaceCount(), im.FaceCount());
+    const Partition partition = SidesOfTwoCubes(im);
+    const MeshingParam param;
+    TMesh fresh;
+    const MeshingReport freshReport = BuildApproximatingMesh(im, partition, param, fresh);
+    ASSERT_TRUE(freshReport.ok);
+    ASSERT_GT(freshReport.validity.selfIntersections, 0);
+    const auto shared = std::make_shared<detail::InputIntersections>(im);
+    const auto ofOther = std::make_shared<detail::InputIntersections>(other);
+    const IndexedMesh expected = BuildIndexedMesh(fresh);
+    for (const auto &given : {shared, shared, ofOther}) {
+        MeshingStart start;
+        start.intersections = given;
+        TMesh out;
+        const MeshingReport report = BuildApproximatingMesh(im, partition, param, out, nullptr, std::move(start));
+        ASSERT_TRUE(report.ok);
+        EXPECT_EQ(report.passes, freshReport.passes);
+        EXPECT_EQ(report.halvingRoundsRun, freshReport.halvingRoundsRun);
+        const IndexedMesh got = BuildIndexedMesh(out);
+        EXPECT_EQ(got.positions, expected.positions);
+        EXPECT_EQ(got.faces, expected.faces);
+    }
 }

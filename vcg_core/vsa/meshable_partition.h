@@ -113,7 +113,7 @@ template <class CoordType>
 struct TrialSetup
 {
     TrialSetup(const IndexedMesh &in, const MeshingParam &meshing)
-        : intersections(in), once(meshing),
+        : intersections(std::make_shared<InputIntersections>(in)), once(meshing),
           clearance(SavedCoordinateClearance<typename CoordType::ScalarType>(in.positions))
     {
         once.repairRounds = once.halvingRounds = 0;
@@ -130,7 +130,8 @@ struct TrialSetup
     }
     TrialSetup(const TrialSetup &) = delete;  // grid, gapTest and latest refer to the surfaces
 
-    InputIntersections intersections;
+    /// Shared, so that the meshing can go on from what the trials found (see MeshingStart).
+    std::shared_ptr<InputIntersections> intersections;
     MeshingParam once;  ///< the meshing's, without repairs
     /// The final meshing's (see BuildApproximatingMesh): the trials' close pairs are ignored, but
     /// found alike, so that the meshing can take the last trial's defects as its own.
@@ -349,7 +350,7 @@ RegionTrial TrialMeshRegions(TrialSetup<CoordType> &input, const Partition &part
     const std::unique_ptr<CellMesher<CoordType>> before = std::move(input.latest);
     input.latest = std::make_unique<CellMesher<CoordType>>(
         s, proxies, fits, once, 0,
-        once.chordGapThreshold > 0 ? input.gapTest.get() : nullptr, input.intersections, input.passes, nullptr,
+        once.chordGapThreshold > 0 ? input.gapTest.get() : nullptr, *input.intersections, input.passes, nullptr,
         before ? std::optional<CellFlooding>(std::move(before->Flooding())) : std::nullopt);
     input.latestSurface = slot;
     input.latest->Repair();
@@ -374,7 +375,7 @@ RegionTrial TrialMeshRegions(TrialSetup<CoordType> &input, const Partition &part
     for (const PassDefects::Crossing &crossing : defects.crossings) flag(s.cellRegion[crossing.cell], RegionFault::Folds);
     std::vector<char> meeting(s.CellCount(), 0);
     for (const auto &[f, g] : defects.intersections) meeting[pass.triangleCell[f]] = meeting[pass.triangleCell[g]] = 1;
-    const std::vector<char> inputMeets = input.intersections.CellsAmong(s, meeting);
+    const std::vector<char> inputMeets = input.intersections->CellsAmong(s, meeting);
     for (int c = 0; c < s.CellCount(); ++c)
         if (meeting[c] && !inputMeets[c]) flag(s.cellRegion[c], RegionFault::Intersects);
     input.defects = std::move(defects);
@@ -424,7 +425,7 @@ MeshablePartitionReport MakePartitionMeshable(Approximation &approximation, cons
                                               const MeshablePartitionParam &param, vcg::CallBackPos *cb = nullptr,
                                               MeshingStart *start = nullptr)
 {
-    if (start) start->surface.reset(), start->flooding.reset(), start->grid.reset();
+    if (start) start->surface.reset(), start->flooding.reset(), start->grid.reset(), start->intersections.reset();
     MeshablePartitionReport report;
     report.proxiesRequested = report.proxiesFinal = approximation.ProxyCount();
     CheckMeshablePartitionParam(param);
@@ -468,6 +469,7 @@ MeshablePartitionReport MakePartitionMeshable(Approximation &approximation, cons
     if (start && input.latest) {
         start->surface = input.surfaces[input.latestSurface];
         start->grid = input.grid;
+        start->intersections = input.intersections;
         start->flooding.emplace(std::move(input.latest->Flooding()));
         start->checked = detail::CheckedPass{input.latest->Best().pass, std::move(input.defects), input.clearance};
     }

@@ -65,10 +65,15 @@ public:
     /// not faces or regions: the planes, the regions' fits and the gap test's grid of
     /// the first surface serve every surface split from it. `grid`: a grid of the surface's
     /// faces for the gap test to borrow, or nullptr to build one when needed.
+    /// `inputIntersections`: of `in`, as far as known, or nullptr to start from nothing.
     SurfaceMeshing(const IndexedMesh &in, std::shared_ptr<MeshingSurface> surface,
-                   std::shared_ptr<const SurfaceGrid> grid, const std::vector<Proxy> &given,
-                   const MeshingParam &param, double clearance, MeshingReport &report, ProgressStage &progress)
-        : param_(param), report_(report), progress_(progress), inputIntersections_(in), clearance_(clearance),
+                   std::shared_ptr<const SurfaceGrid> grid, std::shared_ptr<InputIntersections> inputIntersections,
+                   const std::vector<Proxy> &given, const MeshingParam &param, double clearance,
+                   MeshingReport &report, ProgressStage &progress)
+        : param_(param), report_(report), progress_(progress),
+          inputIntersections_(inputIntersections ? std::move(inputIntersections)
+                                                 : std::make_shared<InputIntersections>(in)),
+          clearance_(clearance),
           surface_(std::move(surface)), proxies_(UsableProxies(*surface_, given)),
           fits_(MeasureRegionFits(*surface_, proxies_)), grid_(std::move(grid)),
           gapTest_(surface_->positions, surface_->faces, param.chordGapThreshold, grid_.get()), bestSurface_(surface_)
@@ -105,7 +110,7 @@ public:
             progress_.Step(70 + share * round, 70 + share * (round + 1), kHalvingPasses * latest->FaceCount(),
                            "VSA meshing: halving cells");
             ++report_.halvingRoundsRun;
-            const std::vector<char> intersectingInput = inputIntersections_.CellsAmong(*latest, flagged);
+            const std::vector<char> intersectingInput = inputIntersections_->CellsAmong(*latest, flagged);
             for (int c = 0; c < latest->CellCount(); ++c) {
                 inputIntersectsThere |= flagged[c] && intersectingInput[c];
                 flagged[c] &= !intersectingInput[c];
@@ -158,7 +163,7 @@ public:
             const MeshingPass &pass = latestMesher.Best().pass;
             const PassDefects &defects = latestMesher.Best().defects;
             const std::vector<char> intersectingInput =
-                inputIntersections_.CellsAmong(*latest, CellsOfIntersectingFaces(*latest, pass, defects));
+                inputIntersections_->CellsAmong(*latest, CellsOfIntersectingFaces(*latest, pass, defects));
             for (char intersects : intersectingInput) inputIntersectsThere |= intersects;
             auto carved = std::make_shared<MeshingSurface>(*latest);
             const int pieces = CarveCells(*carved, CarvingSeeds(*latest, pass, defects, intersectingInput));
@@ -185,7 +190,7 @@ private:
     const MeshingParam &param_;
     MeshingReport &report_;
     ProgressStage &progress_;
-    InputIntersections inputIntersections_;
+    std::shared_ptr<InputIntersections> inputIntersections_;  ///< of `in`: the one given, or a new one
     double clearance_;  ///< output faces closer than this are repaired as if they met
     std::shared_ptr<MeshingSurface> surface_;  ///< the first surface: gapTest_ points into it
     std::vector<Proxy> proxies_;
@@ -199,7 +204,7 @@ private:
                                      std::optional<CellFlooding> earlier)
     {
         return std::make_unique<Mesher>(cells, proxies_, fits_, param_, clearance_,
-                                         param_.chordGapThreshold > 0 ? &gapTest_ : nullptr, inputIntersections_,
+                                         param_.chordGapThreshold > 0 ? &gapTest_ : nullptr, *inputIntersections_,
                                          report_.passes, progress, std::move(earlier));
     }
 
@@ -300,6 +305,9 @@ struct MeshingStart
     /// A grid of `surface`'s faces (SurfaceGrid(positions, faces)), if built: the chord gap
     /// test borrows it rather than building its own.
     std::shared_ptr<const SurfaceGrid> grid;
+    /// Where the input intersects itself, as far as it was looked for (with the input's grid),
+    /// if known: it depends on the input only, so it serves any surface of the same input.
+    std::shared_ptr<detail::InputIntersections> intersections;
 };
 
 /// Builds the approximating mesh of a partitioned mesh into `out` (cleared first).
@@ -337,6 +345,7 @@ MeshingReport BuildApproximatingMesh(const IndexedMesh &in, const Partition &par
         if (!BuildMeshingSurface(in, partition.faceRegion, regionCount, *surface, report.error)) return report;
     }
     if (start.flooding && &start.flooding->Surface() != surface.get()) start.flooding.reset();
+    if (start.intersections && &start.intersections->Input() != &in) start.intersections.reset();
     report.ignoredFaces = surface->ignoredFaces;
     report.splitVertices = surface->splitVertices;
     std::vector<int> regionCells(regionCount, 0);  // before any halving (see regionsCut)
@@ -344,8 +353,8 @@ MeshingReport BuildApproximatingMesh(const IndexedMesh &in, const Partition &par
 
     const double clearance = detail::SavedCoordinateClearance<typename OutMeshType::ScalarType>(in.positions);
     detail::SurfaceMeshing<typename OutMeshType::CoordType> meshing(in, surface, std::move(start.grid),
-                                                                   partition.proxies, param, clearance, report,
-                                                                   progress);
+                                                                   std::move(start.intersections), partition.proxies,
+                                                                   param, clearance, report, progress);
     meshing.Repair(std::move(start.flooding), start.checked ? &*start.checked : nullptr);
     meshing.Halve();
     const double faceBudget = param.maxInputFacesGrowth * double(meshing.Best().pass.triangles.size());

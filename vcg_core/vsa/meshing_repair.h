@@ -202,6 +202,8 @@ public:
     {
     }
 
+    const IndexedMesh &Input() const { return in_; }
+
     /// Per cell of `s`: whether it is flagged in `cells` and has an input face that intersects
     /// another input face.
     std::vector<char> CellsAmong(const MeshingSurface &s, const std::vector<char> &cells)
