@@ -249,9 +249,9 @@ TEST(MeshablePartition, TrialsInTurnJudgeAsTrialsAfresh)
 }
 
 /// The meshing starts from the last trial's surface, its grid and floodings, which must be
-/// labelled with the final partition and give the output a surface built afresh gives; a
-/// surface labelled otherwise is not used, nor its grid (whose faces may go with it), nor
-/// floodings of another surface.
+/// labelled with the final partition and give the output a surface built afresh gives, and from
+/// the input's intersections the trials found; a surface labelled otherwise is not used, nor its
+/// grid (whose faces may go with it), nor floodings of another surface.
 TEST(MeshablePartition, MeshingFromTheLastTrialIsTheSame)
 {
     const std::unique_ptr<Approximation> box = PartitionedBoxWithHole(4);

@@ -81,7 +81,7 @@ void BuildTwoCubes(TMesh &cubes, float shift)
     vsa_test::BuildFromLists(cubes, coords, tris);
 }
 
-/// One region per side of each of the two cubes of TwoCubes.
+/// One region per side of each of the two cubes of BuildTwoCubes.
 Partition SidesOfTwoCubes(const IndexedMesh &im)
 {
     return vsa_test::PartitionByRule(im, 12, [&](int f) {

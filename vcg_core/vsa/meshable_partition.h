@@ -418,8 +418,9 @@ inline void CheckMeshablePartitionParam(const MeshablePartitionParam &param)
 /// passes, k' reaches its cap, or the rounds run out.
 ///
 /// `start`, if given, receives the last trial's surface, labelled with the final partition,
-/// its faces' grid, its cells' floodings and its checked pass, for BuildApproximatingMesh to
-/// start from (no surface when there was no trial).
+/// its faces' grid, its cells' floodings and its checked pass, and what the trials found of
+/// the input's own intersections, for BuildApproximatingMesh to start from (nothing when there
+/// was no trial).
 template <class CoordType>
 MeshablePartitionReport MakePartitionMeshable(Approximation &approximation, const MeshingParam &meshing,
                                               const MeshablePartitionParam &param, vcg::CallBackPos *cb = nullptr,

@@ -202,6 +202,7 @@ public:
     {
     }
 
+    /// The mesh whose intersections these are.
     const IndexedMesh &Input() const { return in_; }
 
     /// Per cell of `s`: whether it is flagged in `cells` and has an input face that intersects
