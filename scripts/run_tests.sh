@@ -5,6 +5,16 @@
 set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 bash "$root/scripts/build.sh"
-cd "$root/build"
-ctest --output-on-failure -j2 "$@"
+# The sanitized build runs beside CTest at the lowest priority: CTest's GUI and meshlabserver
+# tests run one at a time (RESOURCE_LOCK xvfb) and leave a core idle for much of their run. In a
+# process group of its own (set -m), so that a failed CTest stops it and its compilers; in the
+# same session, whose scheduling group nice is relative to.
+set -m
+nice -n 19 bash "$root/scripts/build_sanitized.sh" > "$root/build-sanitize.log" 2>&1 &
+sanitized_build=$!
+set +m
+trap 'kill -- -"$sanitized_build" 2>/dev/null || true' EXIT
+(cd "$root/build" && ctest --output-on-failure -j2 "$@")
+wait "$sanitized_build" || { cat "$root/build-sanitize.log"; exit 1; }
+trap - EXIT
 bash "$root/scripts/run_sanitized_tests.sh"
