@@ -219,16 +219,35 @@ TEST(PartitionFlood, BlocksFloodTheSameOnAnyNumberOfThreads)
 TEST(PartitionFlood, WavePolicyOutlastsOneSlowExchangeButNotALoadedMachine)
 {
     // Timed at 40 ns a candidate alone and 20 ns on every thread, the blocks go to the threads.
+    const size_t large = 16 * kParallelMinWave;
     WavePolicy policy;
-    policy.Record(false, 1000, 40e-6);
-    policy.Record(true, 1000, 20e-6);
-    EXPECT_TRUE(policy.Choose());
+    policy.Record(false, large, 1000, 40e-6);
+    policy.Record(true, large, 1000, 20e-6);
+    EXPECT_TRUE(policy.Choose(large));
     // One exchange that waited a millisecond for a thread the system put aside changes nothing...
-    policy.Record(true, 1000, 1e-3);
-    EXPECT_TRUE(policy.Choose());
+    policy.Record(true, large, 1000, 1e-3);
+    EXPECT_TRUE(policy.Choose(large));
     // ...but a few in a row, as on a loaded machine, send the blocks back to the calling thread.
-    for (int slow = 0; slow < 8; ++slow) policy.Record(true, 1000, 1e-3);
-    EXPECT_FALSE(policy.Choose());
+    for (int slow = 0; slow < 8; ++slow) policy.Record(true, large, 1000, 1e-3);
+    EXPECT_FALSE(policy.Choose(large));
+}
+
+TEST(PartitionFlood, WavePolicyJudgesSmallAndLargeExchangesApart)
+{
+    // Small exchanges where waking the threads costs more than it gains run alone, while large
+    // ones, where the threads gain, still go to the threads.
+    const size_t small = kParallelMinWave, large = 64 * kParallelMinWave;
+    WavePolicy policy;
+    policy.Record(false, large, 100000, 4e-3);
+    policy.Record(true, large, 100000, 2e-3);
+    for (int exchange = 0; exchange < 8; ++exchange) {
+        policy.Record(false, small, 1000, 40e-6);
+        policy.Record(true, small, 1000, 100e-6);
+    }
+    EXPECT_FALSE(policy.Choose(small));
+    EXPECT_FALSE(policy.Choose(2 * small));  // the same size
+    EXPECT_TRUE(policy.Choose(large));
+    EXPECT_TRUE(policy.Choose(1000 * large));  // the largest size holds every larger exchange
 }
 
 TEST(PartitionFlood, TiesGrowBreadthFirstOnACube)

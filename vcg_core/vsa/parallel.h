@@ -34,9 +34,9 @@ constexpr int kChunkItems = 4096;
 constexpr size_t kParallelMinItems = size_t(1) << 17;
 
 /// Fewest candidates waiting in an exchange's window for which the blocks of the flood
-/// (partition.h) run on every thread until the exchange: below, the work is tens of
-/// microseconds, about what waking the threads costs, and its timings would mislead WavePolicy.
-constexpr size_t kParallelMinWave = 4096;
+/// (partition.h) may run on every thread until the exchange (WavePolicy decides): below, the
+/// work is tens of microseconds, about what waking the threads costs.
+constexpr size_t kParallelMinWave = 1024;
 
 namespace detail {
 /// kParallelMinItems, or what tests set to send small meshes down the parallel path.

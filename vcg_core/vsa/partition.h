@@ -196,37 +196,53 @@ struct alignas(64) FloodBlock
 
 /// Whether the blocks of a flood run on every thread or on the calling one until their next
 /// exchange, when they have many candidates: whichever took less time per candidate in the last
-/// exchanges that ran that way. On a busy machine the blocks on every thread wait for a thread
-/// the system put aside, often longer than one thread takes alone; the labels are the same
-/// either way, only the time differs.
+/// exchanges of about the same size that ran that way. On a busy machine the blocks on every
+/// thread wait for a thread the system put aside, often longer than one thread takes alone; and
+/// waking the threads weighs more on a small exchange than on a large one, so each size has its
+/// own means. The labels are the same either way, only the time differs.
 class WavePolicy
 {
 public:
-    /// How the blocks run until the next exchange: true on every thread.
-    bool Choose()
+    /// How the blocks run until the next exchange, with `candidates` waiting: true on every thread.
+    bool Choose(size_t candidates)
     {
-        if (perCandidate_[0] == 0) return false;  // each way measured once first
-        if (perCandidate_[1] == 0) return true;
-        const bool faster = perCandidate_[1] < perCandidate_[0];
-        if (++sinceProbe_ < kProbeWaves) return faster;
-        sinceProbe_ = 0;  // now and then the other way, in case the machine's load changed
+        Way &way = ways_[SizeOf(candidates)];
+        if (way.perCandidate[0] == 0) return false;  // each way measured once first
+        if (way.perCandidate[1] == 0) return true;
+        const bool faster = way.perCandidate[1] < way.perCandidate[0];
+        if (++way.sinceProbe < kProbeWaves) return faster;
+        way.sinceProbe = 0;  // now and then the other way, in case the machine's load changed
         return !faster;
     }
 
-    void Record(bool shared, size_t candidates, double seconds)
+    /// Records that an exchange with `candidates` waiting decided `decided` in `seconds`.
+    void Record(bool shared, size_t candidates, size_t decided, double seconds)
     {
-        double &p = perCandidate_[shared];
-        const double x = seconds / double(candidates);
+        double &p = ways_[SizeOf(candidates)].perCandidate[shared];
+        const double x = seconds / double(std::max<size_t>(1, decided));
         // One exchange that waited for a thread put aside once moves the mean a little only.
         p = p == 0 ? x : p + kWeight * (std::min(x, kMaxRise * p) - p);
     }
 
 private:
-    static constexpr int kProbeWaves = 64;  ///< exchanges with many candidates between two runs the slower way
+    struct Way
+    {
+        double perCandidate[2] = {0, 0};  ///< seconds, on one thread and on every thread
+        int sinceProbe = 0;
+    };
+    /// Sizes by factors of 4 from kParallelMinWave candidates: a wake-up weighs 4 times less
+    /// on each size than on the one before.
+    static int SizeOf(size_t candidates)
+    {
+        int size = 0;
+        for (size_t c = candidates / kParallelMinWave; c >= 4 && size + 1 < kSizes; c /= 4) ++size;
+        return size;
+    }
+    static constexpr int kSizes = 4;         ///< the last holds exchanges of 64 times kParallelMinWave and up
+    static constexpr int kProbeWaves = 64;   ///< exchanges of a size between two runs the slower way
     static constexpr double kWeight = 0.25;  ///< of the latest exchange in the running mean
     static constexpr double kMaxRise = 2;    ///< the most an exchange counts for, times the mean
-    double perCandidate_[2] = {0, 0};       ///< seconds, on one thread and on every thread
-    int sinceProbe_ = 0;
+    Way ways_[kSizes];
 };
 
 /// Scratch memory reused by every flood and growth, so that the hot loops never allocate.
@@ -427,12 +443,12 @@ private:
         size_t decided;  // counted on the calling thread, after the others are done
         if (ws_.activeBlocks.size() > 1 && MaxThreads() > 1 && candidates >= detail::ParallelMinWave()) {
             // Tests that lower the bound send every such exchange to the threads.
-            const bool shared = detail::ParallelMinWave() < kParallelMinWave || ws_.wavePolicy.Choose();
+            const bool shared = detail::ParallelMinWave() < kParallelMinWave || ws_.wavePolicy.Choose(candidates);
             const auto start = std::chrono::steady_clock::now();
             if (shared) RunBlocksShared();
             else RunBlocksAlone();
             decided = TakeDecided();
-            ws_.wavePolicy.Record(shared, std::max<size_t>(1, decided),
+            ws_.wavePolicy.Record(shared, candidates, decided,
                                   std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
         } else {
             RunBlocksAlone();
