@@ -483,24 +483,29 @@ private:
 
     double BestEnergy() const { return bestIsState_ ? state_.Energy() : best_.Energy(); }
 
-    /// FNV-1a over the labels: two equal hashes mean the Lloyd loop came back to a partition.
+    /// FNV-1a over the labels, chunk by chunk on every core, then over the chunks' hashes in
+    /// chunk order: two equal hashes mean the Lloyd loop came back to a partition. Chunks do not
+    /// depend on the thread count, so neither does the hash.
     uint64_t HashLabels() const
     {
-        uint64_t h = 14695981039346656037ull;
-        for (int r : state_.partition.faceRegion) {
-            h ^= uint64_t(uint32_t(r));
-            h *= 1099511628211ull;
-        }
+        constexpr uint64_t kOffset = 14695981039346656037ull, kPrime = 1099511628211ull;
+        const auto &faceRegion = state_.partition.faceRegion;
+        std::vector<uint64_t> chunkHash(ChunkCount(faceRegion.size()));
+        ForEachChunk(faceRegion.size(), [&](int chunk, size_t begin, size_t end) {
+            uint64_t h = kOffset;
+            for (size_t f = begin; f < end; ++f) h = (h ^ uint64_t(uint32_t(faceRegion[f]))) * kPrime;
+            chunkHash[chunk] = h;
+        });
+        uint64_t h = kOffset;
+        for (uint64_t c : chunkHash) h = (h ^ c) * kPrime;
         return h;
     }
 
     /// The non-seed face of `region` with the largest error (ties: lowest index), or -1.
     int WorstFace(int region) const
     {
-        std::vector<int> faces;
-        for (int f = 0; f < mesh_.FaceCount(); ++f)
-            if (state_.partition.faceRegion[f] == region) faces.push_back(f);
-        return WorstFace(faces);
+        const auto &faceRegion = state_.partition.faceRegion;
+        return WorstFace(ItemsWhere(faceRegion.size(), [&](size_t f) { return faceRegion[f] == region; }));
     }
 
     /// The non-seed face among `faces` (ascending) with the largest error (ties: the first), or -1.
@@ -564,10 +569,13 @@ private:
     void MergeRegions(const Metric &metric, int keep, int remove)
     {
         auto &faceRegion = state_.partition.faceRegion;
-        for (int &r : faceRegion) {
-            if (r == remove) r = keep;
-            else if (r > remove) --r;
-        }
+        ForEachChunk(faceRegion.size(), [&](int, size_t begin, size_t end) {
+            for (size_t f = begin; f < end; ++f) {
+                int &r = faceRegion[f];
+                if (r == remove) r = keep;
+                else if (r > remove) --r;
+            }
+        });
         state_.partition.proxies.erase(state_.partition.proxies.begin() + remove);
         state_.seeds.erase(state_.seeds.begin() + remove);
         state_.regionEnergy.erase(state_.regionEnergy.begin() + remove);

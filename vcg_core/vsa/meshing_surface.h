@@ -697,14 +697,17 @@ inline std::vector<int> RenumberCells(MeshingSurface &s, const std::vector<char>
     return newIndex;
 }
 
-/// Recomputes the junctions at the vertices of `faces` (ascending), each once: given the faces
-/// of the regions a relabelling changed, the only vertices whose boundary edges can change.
+/// Recomputes the junctions at the vertices of `faces`, on every core: given the faces of the
+/// regions a relabelling changed, the only vertices whose boundary edges can change.
 inline void UpdateJunctions(MeshingSurface &s, const std::vector<int> &faces)
 {
-    std::vector<char> tested(s.VertexCount(), 0);
+    std::vector<char> touched(s.VertexCount(), 0);
     for (int f : faces)
-        for (int v : s.faces[f])
-            if (!tested[v]) tested[v] = 1, s.junction[v] = IsJunction(s, v);
+        for (int v : s.faces[f]) touched[v] = 1;
+    ForEachChunk(size_t(s.VertexCount()), [&](int, size_t begin, size_t end) {
+        for (size_t v = begin; v < end; ++v)
+            if (touched[v]) s.junction[v] = IsJunction(s, int(v));
+    });
 }
 
 /// BuildCellsAndLoops for a surface whose cells were built before (one piece per region) and
