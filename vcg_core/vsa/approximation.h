@@ -488,16 +488,17 @@ private:
     /// depend on the thread count, so neither does the hash.
     uint64_t HashLabels() const
     {
-        constexpr uint64_t kOffset = 14695981039346656037ull, kPrime = 1099511628211ull;
+        constexpr uint64_t kOffset = 14695981039346656037ull;
+        const auto mix = [](uint64_t h, uint64_t x) { return (h ^ x) * 1099511628211ull; };
         const auto &faceRegion = state_.partition.faceRegion;
         std::vector<uint64_t> chunkHash(ChunkCount(faceRegion.size()));
         ForEachChunk(faceRegion.size(), [&](int chunk, size_t begin, size_t end) {
             uint64_t h = kOffset;
-            for (size_t f = begin; f < end; ++f) h = (h ^ uint64_t(uint32_t(faceRegion[f]))) * kPrime;
+            for (size_t f = begin; f < end; ++f) h = mix(h, uint32_t(faceRegion[f]));
             chunkHash[chunk] = h;
         });
         uint64_t h = kOffset;
-        for (uint64_t c : chunkHash) h = (h ^ c) * kPrime;
+        for (uint64_t c : chunkHash) h = mix(h, c);
         return h;
     }
 
